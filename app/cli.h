@@ -1,0 +1,38 @@
+// The `gridcull` command line (shared/spec/cli.md). Every subcommand returns an
+// exit status: 0 done, 2 bad command line, 3 scene rejected, 1 anything else.
+#pragma once
+#include <string>
+
+#include "culling/culler.h"
+#include "culling/scene.h"
+
+namespace gridcull {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitSceneRejected = 3;
+
+int runCli(int argc, char** argv);
+
+// Subcommands; argv[first] is the first argument after the command's name.
+int runCullCommand(int argc, char** argv, int first);
+int runBenchCommand(int argc, char** argv, int first);
+int runShotCommand(int argc, char** argv, int first);
+int runViewCommand(int argc, char** argv, int first);
+
+// Loads a scene file; on failure prints every message to stderr and returns false.
+bool loadSceneOrReport(const std::string& path, Scene& scene);
+
+// Prints "gridcull CMD: message" and a pointer to --help; returns kExitUsage.
+int usageError(const char* command, const std::string& message);
+
+// The flags every culling command shares, and reading them into CullerOptions.
+extern const char* const kCullerOptionsHelp;
+class CliArgs;
+bool readCullerOptions(CliArgs& args, CullerOptions& options);
+// Checks that every name in a comma-separated list is an algorithm.
+bool splitAlgorithms(const std::string& list, std::vector<std::string>& names,
+                     std::string& error);
+
+}  // namespace gridcull

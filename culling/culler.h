@@ -1,0 +1,52 @@
+// The one interface every culling algorithm implements (shared/design.md).
+// A culler keeps its state between frames, so frames must be given in order;
+// call reset() when the scene changes or time jumps backwards.
+#pragma once
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "culling/camera.h"
+#include "culling/cull_stats.h"
+#include "culling/scene.h"
+
+namespace gridcull {
+
+struct FrameResult {
+    std::vector<int> pvs;  // potentially visible object ids, sorted ascending
+    CullStats stats;
+};
+
+class Culler {
+public:
+    virtual ~Culler() = default;
+    // The --algo name, e.g. "vfc".
+    virtual const char* name() const = 0;
+    // Forget every frame seen so far and size buffers for `scene`.
+    virtual void reset(const Scene& scene) = 0;
+    // Computes the PVS at time t seen by `camera`. `out.pvs` is cleared and refilled
+    // (its capacity is reused, so a steady state allocates nothing); out.stats is
+    // reset, then filled with this algorithm's counters. cull_ms is set by timedCull.
+    virtual void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) = 0;
+};
+
+// Options that trade speed for accuracy; each algorithm reads the ones it has.
+struct CullerOptions {
+    // exact, 3D: pixels on the long side of the oracle's ID buffer.
+    int oracle_resolution = 1024;
+    // exact, 2D: rays of the angular sweep per full turn (fewer for a narrower wedge).
+    int oracle_rays_per_turn = 16384;
+};
+
+// Every algorithm name `--algo` accepts, in the order they are listed in help.
+std::vector<std::string> cullerNames();
+// Makes the named culler, or returns nullptr and sets `error`.
+std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& options,
+                                   std::string& error);
+
+// Runs culler.cull and sets out.stats.cull_ms from a steady clock.
+void timedCull(Culler& culler, const Scene& scene, const Camera& camera, double t,
+               FrameResult& out);
+
+}  // namespace gridcull
