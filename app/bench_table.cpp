@@ -28,14 +28,14 @@ std::string format(const char* fmt, double v) {
 }  // namespace
 
 double frameMedianMs(const AlgoBench& bench, int frame, int frames, int runs) {
-    std::vector<double> values(size_t(runs));
+    std::vector<double> values(static_cast<size_t>(runs));
     for (int r = 0; r < runs; ++r) values[size_t(r)] = bench.ms[size_t(r * frames + frame)];
     return medianOf(values);
 }
 
 BenchSummary summarize(const AlgoBench& bench, int frames, int runs) {
     BenchSummary s;
-    std::vector<double> medians(size_t(frames));
+    std::vector<double> medians(static_cast<size_t>(frames));
     for (int f = 0; f < frames; ++f) medians[size_t(f)] = frameMedianMs(bench, f, frames, runs);
     double sum = 0.0;
     for (double m : medians) sum += m;
@@ -76,9 +76,9 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
     const double base = sums.front().median_ms;
     std::string out;
     char line[512];
-    std::snprintf(line, sizeof line, "%-14s %10s %10s %10s %9s %9s %9s %10s %8s  %s\n", "algo",
+    std::snprintf(line, sizeof line, "%-14s %10s %10s %10s %9s %9s %9s %10s %9s  %s\n", "algo",
                   "median ms", "p95 ms", ("x " + benches.front().algo).c_str(), "pvs",
-                  "exact", "pvs/exact", "false cull", "frames", "counters (mean per frame)");
+                  "exact", "pvs/exact", "false cull", "fc frames", "counters (mean per frame)");
     out += line;
     for (size_t i = 0; i < benches.size(); ++i) {
         const BenchSummary& s = sums[i];
@@ -91,7 +91,7 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
         const std::string exact = s.mean_exact >= 0 ? format("%.1f", s.mean_exact) : "-";
         const std::string over = s.mean_exact >= 0 ? format("%.3f", s.pvs_over_exact) : "-";
         const std::string fc = s.mean_exact >= 0 ? std::to_string(s.false_culls) : "-";
-        std::snprintf(line, sizeof line, "%-14s %10.4f %10.4f %10s %9.1f %9s %9s %10s %8d  %s\n",
+        std::snprintf(line, sizeof line, "%-14s %10.4g %10.4g %10s %9.1f %9s %9s %10s %9d  %s\n",
                       benches[i].algo.c_str(), s.median_ms, s.p95_ms, ratio.c_str(), s.mean_pvs,
                       exact.c_str(), over.c_str(), fc.c_str(), s.frames_with_false_culls,
                       counters.c_str());

@@ -104,8 +104,8 @@ int runBenchCommand(int argc, char** argv, int first) {
     std::vector<AlgoBench> benches(algos.size());
     for (size_t i = 0; i < algos.size(); ++i) {
         cullers.push_back(makeCuller(algos[i], options, error));
-        if (!cullers.back()) {
-            std::cerr << "gridcull bench: " << error << "\n";
+        if (!cullers.back() || !cullers.back()->supports(scene, error)) {
+            std::cerr << "gridcull bench: " << algos[i] << ": " << error << "\n";
             return kExitFailure;
         }
         AlgoBench& b = benches[i];
@@ -161,9 +161,12 @@ int runBenchCommand(int argc, char** argv, int first) {
     if (args.has("csv")) {
         OutputFile csv;
         const std::string text = formatBenchCsv(benches, n_frames, n_runs, scene.dt);
-        if (!csv.open(args.text("csv", ""), error) ||
-            std::fwrite(text.data(), 1, text.size(), csv.stream()) != text.size() ||
-            !csv.commit(error)) {
+        bool ok = csv.open(args.text("csv", ""), error);
+        if (ok && std::fwrite(text.data(), 1, text.size(), csv.stream()) != text.size()) {
+            error = "writing '" + args.text("csv", "") + "' failed";
+            ok = false;
+        }
+        if (!ok || !csv.commit(error)) {
             std::cerr << "gridcull bench: " << error << "\n";
             return kExitFailure;
         }

@@ -53,6 +53,10 @@ int runCullCommand(int argc, char** argv, int first) {
         std::cerr << "gridcull cull: " << error << "\n";
         return kExitFailure;
     }
+    if (!culler->supports(scene, error)) {
+        std::cerr << "gridcull cull: " << algos[0] << ": " << error << "\n";
+        return kExitFailure;
+    }
     OutputFile file;
     std::FILE* out = stdout;
     if (args.has("out")) {

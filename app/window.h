@@ -15,6 +15,7 @@ struct ViewOptions {
     int frame = 0;              // first frame shown (shot: the frame drawn)
     std::string view = "main";  // shot: which view to draw, see viewNames()
     CullerOptions culler;       // passed to every culler the window makes
+    bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
 };
 

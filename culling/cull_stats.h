@@ -3,6 +3,7 @@
 // them (shared/spec/cli.md lists the names used in `cull` output).
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace gridcull {

@@ -23,6 +23,13 @@ public:
     virtual ~Culler() = default;
     // The --algo name, e.g. "vfc".
     virtual const char* name() const = 0;
+    // Whether this algorithm can run on `scene` (an algorithm built for one
+    // dimension only, say). When it cannot, `why` says so; callers must not cull.
+    virtual bool supports(const Scene& scene, std::string& why) const {
+        (void)scene;
+        (void)why;
+        return true;
+    }
     // Forget every frame seen so far and size buffers for `scene`.
     virtual void reset(const Scene& scene) = 0;
     // Computes the PVS at time t seen by `camera`. `out.pvs` is cleared and refilled

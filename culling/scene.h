@@ -100,7 +100,13 @@ struct Scene {
     double timeOfFrame(int frame) const { return frame * dt; }
     // Index into `objects` of an id, or -1.
     int indexOf(int id) const;
-    // How far the object has moved from where it stands at t = 0.
+    // How far the object has moved from where it stands at t = 0. Linear and
+    // random motion fold back at the world bounds per axis (a triangle wave) so
+    // the t = 0 bounding box stays inside; on an axis where that box is larger
+    // than the world or already sticks out of it, the object does not move.
+    // Keyframes: key position minus anchor, held outside the keys. Random: the
+    // precomputed walk, held after its last segment. Allocates nothing;
+    // O(1), O(log keys) for keyframes.
     glm::dvec3 displacementAt(const SceneObject& object, double t) const;
     glm::dvec3 positionAt(int id, double t) const;  // the anchor at t
     Aabb boundsAt(const SceneObject& object, double t) const;

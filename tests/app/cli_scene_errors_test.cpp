@@ -51,7 +51,7 @@ TEST(CliSceneErrors, EveryBadSceneExitsThreeNamingThePlace) {
         const std::string jsonl = out_dir + "/bad.jsonl";
         const std::string csv = out_dir + "/bad.csv";
         const std::string png = out_dir + "/bad.png";
-        for (const std::string args :
+        for (const std::string& args :
              {"cull " + scene + " --algo vfc --out '" + jsonl + "'",
               "bench " + scene + " --algo all --csv '" + csv + "'",
               "shot " + scene + " --frame 0 --out '" + png + "'"}) {

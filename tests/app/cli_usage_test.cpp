@@ -24,14 +24,15 @@ TEST(CliUsage, VersionAndHelpExitZero) {
 
 TEST(CliUsage, BadCommandLinesExitTwo) {
     const std::string scene = "'" + sourcePath("scenes/default.json") + "'";
-    for (const std::string args :
-         {std::string("frobnicate"), "cull", "cull " + scene, "cull " + scene + " --algo nope",
+    const std::vector<std::string> cases = {
+         std::string("frobnicate"), "cull", "cull " + scene, "cull " + scene + " --algo nope",
           "cull " + scene + " --algo vfc --frames 0", "cull " + scene + " --algo vfc --frames x",
           "cull " + scene + " --algo vfc --bogus", "cull " + scene + " --algo",
           "bench " + scene + " --algo vfc,,all", "bench " + scene + " --algo vfc --runs -1",
           "shot " + scene + " --frame 1", "shot " + scene + " --out x.png",
           "shot " + scene + " --frame 999999 --out x.png",
-          "cull " + scene + " --algo vfc --oracle-res 3"}) {
+          "cull " + scene + " --algo vfc --oracle-res 3"};
+    for (const std::string& args : cases) {
         const CommandResult r = runGridcull(args);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
         EXPECT_FALSE(r.err.empty()) << args;
