@@ -30,6 +30,7 @@ const char* const kViewHelp =
     "\n"
     "  --algo A           the algorithm whose PVS colours the objects (default vfc)\n"
     "  --frame F          start at frame F\n"
+    "  --play             start playing instead of paused\n"
     "  --exit-after N     close by itself after N frames (for scripted runs)\n";
 
 const char* const kWindowFlagsHelp =
@@ -98,7 +99,7 @@ int runShotCommand(int argc, char** argv, int first) {
 
 int runViewCommand(int argc, char** argv, int first) {
     CliArgs args({"frame", "algo", "width", "height", "exit-after", "oracle-res", "oracle-rays"},
-                 {"help"});
+                 {"help", "play"});
     if (!args.parse(argc, argv, first)) return usageError("view", args.error());
     if (args.has("help")) {
         std::printf("%s%s%s", kViewHelp, kWindowFlagsHelp, kCullerOptionsHelp);
@@ -109,6 +110,7 @@ int runViewCommand(int argc, char** argv, int first) {
     std::string error;
     if (!readViewOptions(args, view)) return usageError("view", args.error());
     if (!checkAlgo(view, error)) return usageError("view", error);
+    view.play = args.has("play");
     Scene scene;
     if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
     return runWindow(scene, view);

@@ -44,6 +44,11 @@ struct CullerOptions {
     int oracle_resolution = 1024;
     // exact, 2D: rays of the angular sweep per full turn (fewer for a narrower wedge).
     int oracle_rays_per_turn = 16384;
+    // rgvc: validity period of a temporal bounding volume, seconds (> 0).
+    double rgvc_validity_s = 0.5;
+    // rgvc: voxels along the world's longest axis, the other axis in proportion;
+    // 0 keeps the scene's grid.resolution.
+    int rgvc_grid_resolution = 0;
 };
 
 // Every algorithm name `--algo` accepts, in the order they are listed in help.

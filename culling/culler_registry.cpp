@@ -4,12 +4,13 @@
 #include "culling/all_culler.h"
 #include "culling/culler.h"
 #include "culling/exact_oracle.h"
+#include "culling/rgvc_culler.h"
 #include "culling/vfc_culler.h"
 
 namespace gridcull {
 
 std::vector<std::string> cullerNames() {
-    return {"all", "vfc", "exact"};
+    return {"all", "vfc", "exact", "rgvc"};
 }
 
 std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& options,
@@ -17,6 +18,7 @@ std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& o
     if (name == "all") return std::make_unique<AllCuller>();
     if (name == "vfc") return std::make_unique<VfcCuller>();
     if (name == "exact") return std::make_unique<ExactOracle>(options);
+    if (name == "rgvc") return std::make_unique<RgvcCuller>(options);
     std::string known;
     for (const std::string& n : cullerNames()) known += (known.empty() ? "" : ", ") + n;
     error = "unknown algorithm '" + std::string(name) + "', expected one of: " + known;

@@ -26,9 +26,9 @@ void ErrorList::add(const std::string& path, const std::string& message) {
     push(file_ + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message);
 }
 
-void ErrorList::addAt(int line, int column, const std::string& message) {
-    push(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": parse error: " +
-         message);
+void ErrorList::addAt(int line, int column, const std::string& path, const std::string& message) {
+    push(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": parse error" +
+         (path.empty() ? std::string() : " in " + path) + ": " + message);
 }
 
 void ErrorList::addGeneral(const std::string& message) { push(file_ + ": " + message); }
@@ -112,6 +112,7 @@ public:
         error_message_ = ex.what();
         error_token_ = token;
         error_id_ = ex.id;
+        error_path_ = valuePath();
         return false;
     }
 
@@ -120,6 +121,8 @@ public:
     const std::string& errorMessage() const { return error_message_; }
     const std::string& errorToken() const { return error_token_; }
     int errorId() const { return error_id_; }
+    // The JSON path of the value being read when the syntax error struck.
+    const std::string& errorPath() const { return error_path_; }
     bool tooDeep() const { return too_deep_; }
 
 private:
@@ -156,6 +159,22 @@ private:
         return path;
     }
 
+    // Like currentPath, but inside an array names the element not yet started:
+    // a syntax error strikes before value() has counted it.
+    std::string valuePath() const {
+        std::string path;
+        for (size_t i = 0; i < frames_.size(); ++i) {
+            const Frame& frame = frames_[i];
+            if (frame.is_array) {
+                const bool innermost = i + 1 == frames_.size();
+                path = indexPath(path, innermost ? frame.next_index : frame.next_index - 1);
+            } else if (!frame.key.empty() || i + 1 < frames_.size()) {
+                path = childPath(path, frame.key);
+            }
+        }
+        return path;
+    }
+
     Dom dom_;
     ErrorList& errors_;
     std::vector<Frame> frames_;
@@ -165,6 +184,7 @@ private:
     std::string error_message_;
     std::string error_token_;
     int error_id_ = 0;
+    std::string error_path_;
 };
 
 // nlohmann's message starts "[json.exception.parse_error.101] parse error at
@@ -229,11 +249,11 @@ bool parseJson(const std::string& text, ErrorList& errors, Json& out) {
         }
         lineAndColumn(text, position, line, column);
         if (sax.errorId() == 406) {
-            errors.addAt(line, column,
+            errors.addAt(line, column, sax.errorPath(),
                          "number " + sax.errorToken() +
                              " is out of range: must be a finite number");
         } else {
-            errors.addAt(line, column, reasonOf(sax.errorMessage()));
+            errors.addAt(line, column, sax.errorPath(), reasonOf(sax.errorMessage()));
         }
         return false;
     }

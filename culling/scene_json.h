@@ -25,7 +25,8 @@ public:
     // "FILE: path: message"
     void add(const std::string& path, const std::string& message);
     // "FILE:LINE:COL: parse error: message"
-    void addAt(int line, int column, const std::string& message);
+    // A syntax error at line:column, inside the value at JSON `path` ("" at top level).
+    void addAt(int line, int column, const std::string& path, const std::string& message);
     // "FILE: message", for problems that have no place in the file.
     void addGeneral(const std::string& message);
     bool empty() const { return count_ == 0; }

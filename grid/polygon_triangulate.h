@@ -20,7 +20,4 @@ namespace gridcull {
 // scratch list of n indices.
 bool triangulatePolygon(const std::vector<glm::dvec3>& points, std::vector<uint32_t>& triangles);
 
-// Twice the signed area in the x-y plane: positive for counter-clockwise order.
-double signedDoubleArea(const std::vector<glm::dvec3>& points);
-
 }  // namespace gridcull

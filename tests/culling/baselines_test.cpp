@@ -36,7 +36,7 @@ TEST(CounterNames, AreTheSpecNamesInSnakeCase) {
 
 TEST(CullerRegistry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = cullerNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, CullerOptions{}, error);

@@ -110,10 +110,10 @@ TEST(SceneLoader, ReportsEveryProblemInOneFile) {
 TEST(SceneLoader, ParseErrorsGiveLineAndColumn) {
     SceneLoadResult r = loadSceneText("{\n  \"a\": [1, 2,\n    ]\n}", "x.json", "");
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].rfind("x.json:3:5: parse error: ", 0), 0u) << r.errors[0];
+    EXPECT_EQ(r.errors[0].rfind("x.json:3:5: parse error in a[2]: ", 0), 0u) << r.errors[0];
     r = loadSceneText("{\"format\": 1e400}", "y.json", "");
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].rfind("y.json:1:12: parse error: number 1e400 is out of range", 0), 0u)
+    EXPECT_EQ(r.errors[0].rfind("y.json:1:12: parse error in format: number 1e400 is out of range", 0), 0u)
         << r.errors[0];
 }
 

@@ -1,0 +1,19 @@
+// Mouse and keyboard of the debugger window, applied to the Debugger: camera
+// controls in the scene view, hover, and playback keys. Input that ImGui wants
+// (over a panel, typing in a field) is left to ImGui.
+#pragma once
+#include "ui/layout.h"
+
+struct GLFWwindow;
+
+namespace gridcull {
+
+class Debugger;
+
+// Call once per frame after ImGui::NewFrame(). Keys: Space play/pause, Right /
+// Left step, Home first frame, F freeze the culling camera; Fly view: WASD move,
+// Q/E down/up, Shift faster. Mouse: right-drag orbits / looks / pans, the wheel
+// zooms.
+void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayout& layout);
+
+}  // namespace gridcull

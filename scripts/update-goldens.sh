@@ -1,0 +1,31 @@
+#!/bin/sh
+# Regenerates the screenshot goldens (screenshots/*.png) from the cases in
+# tests/screenshots/cases.txt, with the same renderer the test uses: Mesa's
+# software OpenGL (LIBGL_ALWAYS_SOFTWARE=1), under xvfb-run when there is no
+# X display. Look at every changed PNG before committing it.
+#
+# usage: scripts/update-goldens.sh [BUILD_DIR]     (default: build-goldens)
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-"$root/build-goldens"}
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" --target gridcull -j2
+exe="$build/app/gridcull"
+
+run() {
+    if [ -n "${DISPLAY:-}" ]; then
+        "$@"
+    else
+        xvfb-run -a -s "-screen 0 1280x720x24" "$@"
+    fi
+}
+
+mkdir -p "$root/screenshots"
+grep -v '^[[:space:]]*#' "$root/tests/screenshots/cases.txt" | grep -v '^[[:space:]]*$' |
+while read -r name scene frame view algo width height; do
+    echo "screenshots/$name.png: $scene frame $frame, view $view, algo $algo, ${width}x$height"
+    LIBGL_ALWAYS_SOFTWARE=1 run "$exe" shot "$root/$scene" --frame "$frame" --view "$view" \
+        --algo "$algo" --width "$width" --height "$height" --out "$root/screenshots/$name.png"
+done
+echo "done: look at the changed images (git status screenshots/) before committing them"

@@ -1,0 +1,50 @@
+#include "ui/algorithm_panel.h"
+
+#include <imgui.h>
+
+namespace gridcull {
+
+AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
+    AlgorithmAction action;
+    if (!ImGui::CollapsingHeader("Algorithm and cameras", ImGuiTreeNodeFlags_DefaultOpen))
+        return action;
+    const std::vector<std::string>& names = *snapshot.algo_names;
+    const char* current = snapshot.algo_index >= 0 && snapshot.algo_index < int(names.size())
+                              ? names[size_t(snapshot.algo_index)].c_str()
+                              : "?";
+    ImGui::SetNextItemWidth(-60);
+    if (ImGui::BeginCombo("culler", current)) {
+        for (int i = 0; i < int(names.size()); ++i) {
+            const bool selected = i == snapshot.algo_index;
+            if (ImGui::Selectable(names[size_t(i)].c_str(), selected) && !selected)
+                action.select_algo = i;
+            if (selected) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+
+    bool frozen = snapshot.culling_camera_frozen;
+    if (ImGui::Checkbox("freeze culling camera", &frozen)) action.freeze_culling = frozen;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Cull from where the camera is now while objects keep moving");
+
+    if (snapshot.scene->dimensions == 3) {
+        int mode = int(snapshot.view_mode);
+        ImGui::TextUnformatted("view:");
+        ImGui::SameLine();
+        bool changed = ImGui::RadioButton("orbit", &mode, int(ViewMode::Overview));
+        ImGui::SameLine();
+        changed |= ImGui::RadioButton("fly", &mode, int(ViewMode::Fly));
+        ImGui::SameLine();
+        changed |= ImGui::RadioButton("culling camera", &mode, int(ViewMode::CullingCamera));
+        if (changed) action.view_mode = ViewMode(mode);
+        ImGui::TextDisabled(snapshot.view_mode == ViewMode::Fly
+                                ? "WASD/QE move, right-drag look, shift fast"
+                                : "right-drag rotate, wheel zoom");
+    } else {
+        ImGui::TextDisabled("top-down map: right-drag pan, wheel zoom");
+    }
+    return action;
+}
+
+}  // namespace gridcull

@@ -1,0 +1,19 @@
+// Algorithm and cameras: which culler colours the objects, freezing the culling
+// camera, and how the view looks at the scene.
+#pragma once
+#include <optional>
+
+#include "ui/frame_snapshot.h"
+
+namespace gridcull {
+
+struct AlgorithmAction {
+    std::optional<int> select_algo;      // index into snapshot.algo_names
+    std::optional<bool> freeze_culling;  // freeze / release the culling camera
+    std::optional<ViewMode> view_mode;
+};
+
+// Draws into the current ImGui window.
+AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot);
+
+}  // namespace gridcull

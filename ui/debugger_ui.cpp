@@ -1,0 +1,39 @@
+#include "ui/debugger_ui.h"
+
+#include <cassert>
+
+#include <imgui.h>
+
+#include "ui/hover_panel.h"
+#include "ui/legend_panel.h"
+
+namespace gridcull {
+
+UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
+                         const WindowLayout& layout) {
+    assert(snapshot.scene && snapshot.algo_names && snapshot.result && snapshot.exact &&
+           snapshot.false_culled && snapshot.history && snapshot.scene_file &&
+           snapshot.scene_errors);
+    UiActions actions;
+
+    const PixelRect& column = layout.panels;
+    ImGui::SetNextWindowPos(ImVec2(float(column.x), float(column.y)), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(column.width), float(column.height)), ImGuiCond_Always);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (ImGui::Begin("gridcull debugger", nullptr, flags)) {
+        // Top to bottom: what is loaded, time, the culler, its numbers, the object
+        // under the mouse, the colour key.
+        actions.scene = drawScenePanel(snapshot, state.scene);
+        actions.playback = drawPlaybackPanel(snapshot);
+        actions.algorithm = drawAlgorithmPanel(snapshot);
+        drawStatsPanel(snapshot, state.stats);
+        drawHoverPanel(snapshot);
+        drawLegendPanel(snapshot);
+    }
+    ImGui::End();
+    return actions;
+}
+
+}  // namespace gridcull

@@ -1,0 +1,70 @@
+// Everything the debugger panels show about one frame, as a const view that the
+// app fills before drawing the panels. Pointers borrow from the app and stay
+// valid only while the panels are drawn; the panels never keep them.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "culling/culler.h"
+#include "culling/scene.h"
+#include "grid/aabb.h"
+#include "ui/object_state.h"
+
+namespace gridcull {
+
+// Per-frame values for the plots, one slot per scene frame; slots 0..frame are
+// filled (culling always runs from frame 0 up to the current frame).
+struct FrameHistory {
+    std::vector<float> pvs_size;
+    std::vector<float> exact_visible;
+    std::vector<float> false_culls;
+    std::vector<float> cull_ms;   // the selected culler's, wall clock
+    std::vector<float> draw_ms;   // 0 for frames that were never drawn
+
+    // Sizes every series to `frames` slots of 0 (allocates only when it grows).
+    void resize(int frames);
+};
+
+// How the 3D / 2D view looks at the scene.
+enum class ViewMode {
+    Overview,       // 3D: orbit around the world (right-drag, wheel); 2D: top-down map
+    Fly,            // 3D: free observer camera (WASD, right-drag to look)
+    CullingCamera,  // 3D: look through the culling camera
+};
+
+// The object under the mouse in the 3D / 2D view.
+struct HoverInfo {
+    int id = -1;  // -1: nothing under the mouse
+    ShapeKind shape = ShapeKind::Sphere;
+    ObjectState state = ObjectState::Culled;
+    Aabb bounds;                 // world bounds at the current t
+    MotionKind motion = MotionKind::Static;
+    double max_speed = 0.0;
+    double distance = 0.0;       // 3D: along the mouse ray; 2D: 0
+};
+
+struct FrameSnapshot {
+    const Scene* scene = nullptr;
+    int frame = 0;
+    double t = 0.0;
+    bool playing = false;
+
+    const std::vector<std::string>* algo_names = nullptr;  // cullerNames()
+    int algo_index = 0;                                    // into algo_names
+    const FrameResult* result = nullptr;  // the selected culler at `frame`
+    const FrameResult* exact = nullptr;   // the oracle at `frame`
+    const std::vector<int>* false_culled = nullptr;  // ids, ascending
+    const FrameHistory* history = nullptr;
+
+    HoverInfo hover;
+    double draw_ms = 0.0;       // CPU time of the last scene draw, up to glFinish
+    bool show_timings = true;   // false in shots: times differ from run to run
+
+    ViewMode view_mode = ViewMode::Overview;
+    bool culling_camera_frozen = false;
+
+    const std::string* scene_file = nullptr;                // "" for the built-in scene
+    const std::vector<std::string>* scene_errors = nullptr;  // of the last failed open
+};
+
+}  // namespace gridcull

@@ -1,0 +1,21 @@
+#include "ui/layout.h"
+
+#include <algorithm>
+
+namespace gridcull {
+
+WindowLayout computeLayout(int width, int height, bool with_panels) {
+    width = std::max(width, 1);
+    height = std::max(height, 1);
+    WindowLayout layout;
+    if (!with_panels) {
+        layout.scene_view = {0, 0, width, height};
+        return layout;
+    }
+    const int column = std::min(kPanelColumnWidth, width * 45 / 100);
+    layout.scene_view = {0, 0, std::max(width - column, 1), height};
+    layout.panels = {width - column, 0, column, height};
+    return layout;
+}
+
+}  // namespace gridcull

@@ -1,0 +1,27 @@
+// Where the scene view and the panel column go in the window. Fixed, so that a
+// shot of a given size always lays out the same, and the window matches it.
+// Rectangles are in window pixels with the origin at the top left.
+#pragma once
+
+namespace gridcull {
+
+struct PixelRect {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool contains(double px, double py) const {
+        return px >= x && py >= y && px < x + width && py < y + height;
+    }
+};
+
+struct WindowLayout {
+    PixelRect scene_view;  // the 3D / 2D view
+    PixelRect panels;      // the column of panels; width 0 when there are none
+};
+
+// Panel column width in pixels at window widths >= 2x this; narrower windows give
+// the column at most 45% of the width.
+constexpr int kPanelColumnWidth = 380;
+
+// with_panels == false: the scene view fills the window (shot --view scene).
+WindowLayout computeLayout(int width, int height, bool with_panels);
+
+}  // namespace gridcull

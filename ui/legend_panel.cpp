@@ -1,0 +1,30 @@
+#include "ui/legend_panel.h"
+
+#include <imgui.h>
+
+namespace gridcull {
+
+namespace {
+
+void swatch(Rgb c, const char* name, const char* meaning) {
+    const ImVec4 color(c.r, c.g, c.b, 1.0f);
+    ImGui::ColorButton(name, color, ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                       ImVec2(13, 13));
+    ImGui::SameLine();
+    ImGui::Text("%-12s %s", name, meaning);
+}
+
+}  // namespace
+
+void drawLegendPanel(const FrameSnapshot& snapshot) {
+    if (!ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    for (int s = 0; s < kObjectStateCount; ++s) {
+        const ObjectState state = ObjectState(s);
+        swatch(objectStateColor(state), objectStateName(state), objectStateMeaning(state));
+    }
+    swatch(cullingCameraColor(), "camera",
+           snapshot.scene->dimensions == 3 ? "culling frustum, cut to the world"
+                                           : "culling view wedge");
+}
+
+}  // namespace gridcull

@@ -1,0 +1,45 @@
+#include "ui/scene_panel.h"
+
+#include <filesystem>
+
+#include <imgui.h>
+
+namespace gridcull {
+
+SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state) {
+    SceneAction action;
+    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return action;
+    const Scene& scene = *snapshot.scene;
+    const std::string& file = *snapshot.scene_file;
+    // The file's name only: a full path would make shots depend on where the
+    // source tree is. The full path is in the tooltip.
+    const std::string shown = file.empty() ? "built in" : std::filesystem::path(file).filename().string();
+    ImGui::Text("%s (%s)", scene.name.c_str(), shown.c_str());
+    if (!file.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", file.c_str());
+    const glm::ivec3 r = scene.grid.resolution;
+    if (scene.dimensions == 3)
+        ImGui::Text("3D, %zu objects, grid %dx%dx%d", scene.objects.size(), r.x, r.y, r.z);
+    else
+        ImGui::Text("2D, %zu objects, grid %dx%d", scene.objects.size(), r.x, r.y);
+    ImGui::Text("%d frames, dt %.3f s", scene.frames, scene.dt);
+
+    ImGui::SetNextItemWidth(-60);
+    const bool entered = ImGui::InputTextWithHint("##path", "path/to/scene.json", state.path,
+                                                  sizeof state.path,
+                                                  ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("Open") || entered) && state.path[0] != '\0') {
+        action.open = true;
+        action.path = state.path;
+    }
+    const std::vector<std::string>& errors = *snapshot.scene_errors;
+    if (!errors.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(240, 110, 90, 255));
+        ImGui::TextUnformatted("not opened, scene kept:");
+        for (const std::string& message : errors) ImGui::TextWrapped("%s", message.c_str());
+        ImGui::PopStyleColor();
+    }
+    return action;
+}
+
+}  // namespace gridcull
