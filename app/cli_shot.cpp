@@ -12,7 +12,7 @@ namespace {
 
 const char* const kShotHelp =
     "usage: gridcull shot SCENE --frame F --out FILE.png [--view V] [--algo A]\n"
-    "                     [--width W] [--height H]\n"
+    "                     [--width W] [--height H] [--layer N] [--occluder K]\n"
     "\n"
     "Renders frame F of SCENE exactly as the window shows it (culling run from frame 0,\n"
     "so temporal state is as in the window) and writes a PNG. Needs an X display: on a\n"
@@ -21,6 +21,13 @@ const char* const kShotHelp =
     "  --frame F          the frame to draw (0-based)\n"
     "  --out FILE.png     where to write; the file appears only when complete\n"
     "  --view V           ";
+
+const char* const kShotRgvcHelp =
+    "  --layer N          rgvc, 2D: show the traversal up to chess layer N, that layer\n"
+    "                     and its seed highlighted (default: every layer)\n"
+    "  --occluder K       rgvc, 2D: pick extended occluder K (0-based, in the order the\n"
+    "                     traversal found them) and draw its extension steps and\n"
+    "                     occlusion polygon (default: none)\n";
 
 const char* const kViewHelp =
     "usage: gridcull view SCENE [--algo A] [--frame F] [--width W] [--height H]\n"
@@ -66,13 +73,15 @@ bool checkAlgo(const ViewOptions& view, std::string& error) {
 }  // namespace
 
 int runShotCommand(int argc, char** argv, int first) {
-    CliArgs args({"frame", "out", "view", "algo", "width", "height", "oracle-res", "oracle-rays"},
+    CliArgs args({"frame", "out", "view", "algo", "width", "height", "oracle-res", "oracle-rays",
+                  "layer", "occluder"},
                  {"help"});
     if (!args.parse(argc, argv, first)) return usageError("shot", args.error());
     if (args.has("help")) {
         std::printf("%s%s\n  --algo A           the algorithm that colours the objects "
-                    "(default vfc)\n%s%s",
-                    kShotHelp, viewNamesHelp(), kWindowFlagsHelp, kCullerOptionsHelp);
+                    "(default vfc)\n%s%s%s",
+                    kShotHelp, viewNamesHelp(), kShotRgvcHelp, kWindowFlagsHelp,
+                    kCullerOptionsHelp);
         return kExitOk;
     }
     if (args.positional().size() != 1) return usageError("shot", "expected one SCENE file");
@@ -82,6 +91,12 @@ int runShotCommand(int argc, char** argv, int first) {
     std::string error;
     if (!readViewOptions(args, view)) return usageError("shot", args.error());
     if (!checkAlgo(view, error)) return usageError("shot", error);
+    long long layer = view.rgvc_layer, occluder = view.rgvc_occluder;
+    if (!args.integer("layer", 0, 100000000, layer) ||
+        !args.integer("occluder", 0, 100000000, occluder))
+        return usageError("shot", args.error());
+    view.rgvc_layer = layer;
+    view.rgvc_occluder = int(occluder);
 
     Scene scene;
     if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;

@@ -35,6 +35,7 @@ bool Debugger::init(const Scene& scene, std::string& error) {
 void Debugger::updateHover(double x, double y, bool inside, const PixelRect& view) {
     hovered_index_ = -1;
     hovered_distance_ = 0.0;
+    voxel_hovered_ = false;
     if (!inside || !view.contains(x, y)) return;
     const Scene& scene = session_.scene();
     const ViewMatrices m = view_camera_.matrices(view_mode_, session_.cullingCamera(),
@@ -42,6 +43,9 @@ void Debugger::updateHover(double x, double y, bool inside, const PixelRect& vie
     glm::dvec3 origin, dir;
     viewRay(m, x - view.x, y - view.y, view.width, view.height, origin, dir);
     if (scene.dimensions == 2) {
+        const glm::ivec3 voxel = scene.grid.voxelOf(origin);
+        voxel_hovered_ = true;
+        hovered_voxel_ = {voxel.x, voxel.y};
         hovered_index_ = pickObject2d(scene, session_.t(), origin, session_.states());
         return;
     }
@@ -90,6 +94,12 @@ void Debugger::toggleFreeze() {
     session_.setCullingCameraFrozen(!session_.cullingCameraFrozen());
 }
 
+void Debugger::pickRgvcOccluder() {
+    const RgvcSnapshot* rgvc = session_.rgvcSnapshot();
+    if (!rgvc || !voxel_hovered_) return;
+    rgvc_view_.occluder = rgvcOccluderAt(*rgvc, hovered_voxel_);
+}
+
 FrameSnapshot Debugger::snapshot() const {
     FrameSnapshot s;
     s.scene = &session_.scene();
@@ -110,10 +120,15 @@ FrameSnapshot Debugger::snapshot() const {
     s.culling_camera_frozen = session_.cullingCameraFrozen();
     s.scene_file = &session_.sceneFile();
     s.scene_errors = &scene_errors_;
+    s.rgvc = session_.rgvcSnapshot();
+    s.rgvc_view = rgvc_view_;
+    if (s.rgvc && voxel_hovered_) s.rgvc_voxel = &rgvc_voxel_;
     return s;
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
+    if (const RgvcSnapshot* rgvc = session_.rgvcSnapshot(); rgvc && voxel_hovered_)
+        describeRgvcVoxel(*rgvc, session_.scene(), hovered_voxel_, rgvc_voxel_);
     return drawDebuggerUi(snapshot(), ui_state_, layout);
 }
 
@@ -159,6 +174,7 @@ void Debugger::apply(const UiActions& actions) {
     if (algorithm.freeze_culling) session_.setCullingCameraFrozen(*algorithm.freeze_culling);
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
+    if (actions.rgvc.view) rgvc_view_ = *actions.rgvc.view;
 }
 
 void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, double scale) {
@@ -177,6 +193,8 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.view = view_camera_.matrices(view_mode_, session_.cullingCamera(),
                                        double(v.width) / std::max(v.height, 1));
     input.hovered_index = hovered_index_;
+    input.rgvc = session_.rgvcSnapshot();
+    input.rgvc_view = rgvc_view_;
     last_draw_ms_ = renderer_.draw(input);
     session_.recordDrawMs(last_draw_ms_);
 }

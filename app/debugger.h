@@ -20,7 +20,10 @@ namespace gridcull {
 
 class Debugger {
 public:
-    explicit Debugger(const ViewOptions& options) : options_(options), session_(options.culler) {}
+    explicit Debugger(const ViewOptions& options) : options_(options), session_(options.culler) {
+        rgvc_view_.layer = options.rgvc_layer;
+        rgvc_view_.occluder = options.rgvc_occluder;
+    }
 
     // Copies `scene`, sets up GL objects and runs culling up to options.frame.
     bool init(const Scene& scene, std::string& error);
@@ -44,6 +47,9 @@ public:
     void stepForward();
     void stepBack();
     void toggleFreeze();
+    // rgvc, 2D: picks the extended occluder at the voxel under the mouse (none
+    // when no occluder starts at or covers it).
+    void pickRgvcOccluder();
 
     // The panels; returns the user's actions (apply them after the frame).
     UiActions drawUi(const WindowLayout& layout);
@@ -72,6 +78,12 @@ private:
     double last_draw_ms_ = 0.0;
     int hovered_index_ = -1;
     double hovered_distance_ = 0.0;
+    // rgvc (2D): what the overlay shows, the voxel under the mouse and its
+    // description (refreshed before the panels are drawn; its lists are reused).
+    RgvcViewState rgvc_view_;
+    bool voxel_hovered_ = false;
+    glm::ivec2 hovered_voxel_{0};
+    RgvcVoxelInfo rgvc_voxel_;
 };
 
 }  // namespace gridcull

@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "app/object_states.h"
+#include "culling/rgvc_culler.h"
 
 namespace gridcull {
 
@@ -16,6 +17,8 @@ bool makeCullers(const std::string& algo, const CullerOptions& options,
                  std::string& error) {
     culler = makeCuller(algo, options, error);
     if (!culler) return false;
+    // The window draws rgvc's matrices and traversal; only it pays for them.
+    if (auto* rgvc = dynamic_cast<RgvcCuller*>(culler.get())) rgvc->setSnapshotEnabled(true);
     exact.reset();
     if (algo != kOracleName) {
         exact = makeCuller(kOracleName, options, error);
@@ -86,6 +89,13 @@ void DebuggerSession::setCullingCameraFrozen(bool frozen) {
     const int target = frame_;
     restart();
     seek(target);
+}
+
+const RgvcSnapshot* DebuggerSession::rgvcSnapshot() const {
+    if (!scene_ || scene_->dimensions != 2) return nullptr;
+    const auto* rgvc = dynamic_cast<const RgvcCuller*>(culler_.get());
+    if (!rgvc || !rgvc->snapshot().valid) return nullptr;
+    return &rgvc->snapshot();
 }
 
 void DebuggerSession::recordDrawMs(double ms) {

@@ -12,6 +12,7 @@
 
 #include "culling/camera.h"
 #include "culling/culler.h"
+#include "culling/rgvc_snapshot.h"
 #include "culling/scene.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
@@ -58,6 +59,10 @@ public:
     const std::vector<ObjectState>& states() const { return states_; }  // by object index
     const std::vector<int>& falseCulled() const { return false_culled_; }
     const FrameHistory& history() const { return history_; }
+    // The rgvc culler's last frame when it is the selected culler and the scene is
+    // 2D (its snapshot is switched on for that), else null. Valid until the next
+    // frame is culled.
+    const RgvcSnapshot* rgvcSnapshot() const;
 
 private:
     void restart();          // reset both cullers, run frame 0

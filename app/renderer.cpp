@@ -97,7 +97,7 @@ bool Renderer::init(std::string& error) {
     view_projection_location_ = glGetUniformLocation(program_.get(), "u_view_projection");
     eye_location_ = glGetUniformLocation(program_.get(), "u_eye");
     flat_location_ = glGetUniformLocation(program_.get(), "u_flat");
-    if (!line_renderer_.init(error)) return false;
+    if (!line_renderer_.init(error) || !rgvc_overlay_.init(error)) return false;
 
     std::vector<ShadedVertex> vertices, lod_vertices;
     std::vector<uint32_t> indices, lod_indices;
@@ -329,6 +329,8 @@ double Renderer::draw(const SceneDrawInput& input) {
 
     drawOverlays(input, true);
     drawObjects(input);
+    if (input.rgvc && dimensions_ == 2)
+        rgvc_overlay_.draw(*input.rgvc, input.rgvc_view, glm::mat4(input.view.view_projection));
     drawOverlays(input, false);
 
     glDisable(GL_SCISSOR_TEST);

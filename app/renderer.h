@@ -9,6 +9,7 @@
 // a sky term. 2D: a top-down map; circles are unit discs, boxes unit squares,
 // polygons triangulated by ear clipping once per scene; flat colours, with the
 // states layered in depth so a false cull is never hidden under a culled shape.
+// 2D with rgvc: its matrices and traversal over the objects (app/rgvc_overlay.h).
 //
 // All buffers are sized on setScene() and reused: a steady state allocates
 // nothing per frame. Needs a current GL 3.3 core context for every call.
@@ -21,6 +22,7 @@
 
 #include "app/gl_objects.h"
 #include "app/line_renderer.h"
+#include "app/rgvc_overlay.h"
 #include "app/view_camera.h"
 #include "culling/camera.h"
 #include "culling/scene.h"
@@ -39,6 +41,9 @@ struct SceneDrawInput {
     PixelRect viewport;               // window pixels, origin top left
     int framebuffer_height = 0;       // to flip the viewport into GL's bottom-left origin
     int hovered_index = -1;           // outlined when >= 0
+    // 2D rgvc: the culler's state drawn over the objects (null: nothing).
+    const RgvcSnapshot* rgvc = nullptr;
+    RgvcViewState rgvc_view;
 };
 
 class Renderer {
@@ -100,6 +105,7 @@ private:
     std::vector<ColorVertex> fill_;
     std::vector<ColorVertex> highlight_;
     LineRenderer line_renderer_;
+    RgvcOverlay rgvc_overlay_;
 };
 
 }  // namespace gridcull

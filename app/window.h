@@ -1,6 +1,7 @@
 // The desktop debugger and its off-screen twin. Both draw the same frame the same
 // way, so `gridcull shot` is a picture of what the window shows.
 #pragma once
+#include <cstdint>
 #include <string>
 
 #include "culling/culler.h"
@@ -17,6 +18,8 @@ struct ViewOptions {
     CullerOptions culler;       // passed to every culler the window makes
     bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
+    int64_t rgvc_layer = -1;    // rgvc, 2D: traversal shown up to this chess layer (-1: all)
+    int rgvc_occluder = -1;     // rgvc, 2D: the picked extended occluder (-1: none)
 };
 
 // The names `shot --view` accepts ("main": the whole window with its panels, ...).

@@ -27,6 +27,8 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
             camera.orbit(dx, dy);
     }
     if (over_view && io.MouseWheel != 0.0f) camera.zoom(io.MouseWheel);
+    if (over_view && !dimensions3 && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+        debugger.pickRgvcOccluder();
 
     if (io.WantCaptureKeyboard) return;
     if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) debugger.togglePlay();

@@ -23,9 +23,12 @@ run() {
 
 mkdir -p "$root/screenshots"
 grep -v '^[[:space:]]*#' "$root/tests/screenshots/cases.txt" | grep -v '^[[:space:]]*$' |
-while read -r name scene frame view algo width height; do
-    echo "screenshots/$name.png: $scene frame $frame, view $view, algo $algo, ${width}x$height"
+while read -r name scene frame view algo width height extra; do
+    echo "screenshots/$name.png: $scene frame $frame, view $view, algo $algo, ${width}x$height $extra"
+    # $extra unquoted: it is zero or more further shot flags.
+    # shellcheck disable=SC2086
     LIBGL_ALWAYS_SOFTWARE=1 run "$exe" shot "$root/$scene" --frame "$frame" --view "$view" \
-        --algo "$algo" --width "$width" --height "$height" --out "$root/screenshots/$name.png"
+        --algo "$algo" --width "$width" --height "$height" $extra \
+        --out "$root/screenshots/$name.png"
 done
 echo "done: look at the changed images (git status screenshots/) before committing them"

@@ -28,6 +28,8 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
         actions.scene = drawScenePanel(snapshot, state.scene);
         actions.playback = drawPlaybackPanel(snapshot);
         actions.algorithm = drawAlgorithmPanel(snapshot);
+        // rgvc's own view right under the culler that fills it (nothing otherwise).
+        actions.rgvc = drawRgvcPanel(snapshot);
         drawStatsPanel(snapshot, state.stats);
         drawHoverPanel(snapshot);
         drawLegendPanel(snapshot);

@@ -7,6 +7,7 @@
 #include "ui/frame_snapshot.h"
 #include "ui/layout.h"
 #include "ui/playback_panel.h"
+#include "ui/rgvc_panel.h"
 #include "ui/scene_panel.h"
 #include "ui/stats_panel.h"
 
@@ -22,6 +23,7 @@ struct UiActions {
     PlaybackAction playback;
     AlgorithmAction algorithm;
     SceneAction scene;
+    RgvcAction rgvc;
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the

@@ -9,6 +9,7 @@
 #include "culling/scene.h"
 #include "grid/aabb.h"
 #include "ui/object_state.h"
+#include "ui/rgvc_view.h"
 
 namespace gridcull {
 
@@ -65,6 +66,12 @@ struct FrameSnapshot {
 
     const std::string* scene_file = nullptr;                // "" for the built-in scene
     const std::vector<std::string>* scene_errors = nullptr;  // of the last failed open
+
+    // rgvc in a 2D scene: the culler's last frame (null otherwise), what the view
+    // shows of it, and the voxel under the mouse (null when there is none).
+    const RgvcSnapshot* rgvc = nullptr;
+    RgvcViewState rgvc_view;
+    const RgvcVoxelInfo* rgvc_voxel = nullptr;
 };
 
 }  // namespace gridcull

@@ -7,27 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "run_command.h"
+#include "tests/common/bad_scene_manifest.h"
 
 namespace gridcull::test {
 namespace {
 
-struct BadScene {
-    std::string file;
-    std::string expected;
-};
-
-std::vector<BadScene> readManifest() {
-    std::vector<BadScene> cases;
-    std::ifstream in(sourcePath("tests/scenes/bad/expected.tsv"));
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        const auto tab = line.find('\t');
-        if (tab == std::string::npos) continue;
-        cases.push_back({line.substr(0, tab), line.substr(tab + 1)});
-    }
-    return cases;
-}
+std::vector<BadScene> readManifest() { return readBadSceneManifest(GRIDCULL_SOURCE_DIR); }
 
 TEST(CliSceneErrors, ManifestListsEveryBadFile) {
     const auto cases = readManifest();

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/bad_scene_manifest.h"
+
 #include "culling/scene_loader.h"
 
 namespace gridcull {
@@ -49,28 +51,10 @@ Scene loadOk(const std::string& text, const std::string& base_dir = "") {
     return r.scene ? *r.scene : Scene{};
 }
 
-struct BadScene {
-    std::string file;
-    std::string expected;
-};
-
-std::vector<BadScene> readManifest() {
-    std::vector<BadScene> cases;
-    std::ifstream in(sourcePath("tests/scenes/bad/expected.tsv"));
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        const size_t tab = line.find('\t');
-        if (tab == std::string::npos) continue;
-        cases.push_back({line.substr(0, tab), line.substr(tab + 1)});
-    }
-    return cases;
-}
-
 TEST(SceneLoader, EveryBadFileIsRejectedNamingThePlace) {
-    const std::vector<BadScene> cases = readManifest();
+    const std::vector<test::BadScene> cases = test::readBadSceneManifest(GRIDCULL_SOURCE_DIR);
     ASSERT_GE(cases.size(), 34u);
-    for (const BadScene& c : cases) {
+    for (const test::BadScene& c : cases) {
         const std::string path = sourcePath("tests/scenes/bad/" + c.file);
         ASSERT_TRUE(std::filesystem::exists(path)) << path;
         const SceneLoadResult r = loadSceneFile(path);
@@ -88,7 +72,8 @@ TEST(SceneLoader, EveryBadFileIsRejectedNamingThePlace) {
 
 TEST(SceneLoader, ManifestCoversEveryBadFile) {
     std::set<std::string> listed;
-    for (const BadScene& c : readManifest()) listed.insert(c.file);
+    for (const test::BadScene& c : test::readBadSceneManifest(GRIDCULL_SOURCE_DIR))
+        listed.insert(c.file);
     size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/scenes/bad"))) {
         if (entry.path().extension() != ".json") continue;

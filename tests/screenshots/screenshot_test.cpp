@@ -28,6 +28,7 @@ struct ShotCase {
     int frame = 0;
     std::string view, algo;
     int width = 0, height = 0;
+    std::string extra;  // the rest of the line: more shot flags, passed as they are
 };
 
 // gtest names cases by this instead of dumping their bytes.
@@ -41,8 +42,10 @@ std::vector<ShotCase> loadCases() {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream fields(line);
         ShotCase c;
-        if (fields >> c.name >> c.scene >> c.frame >> c.view >> c.algo >> c.width >> c.height)
+        if (fields >> c.name >> c.scene >> c.frame >> c.view >> c.algo >> c.width >> c.height) {
+            std::getline(fields, c.extra);
             cases.push_back(c);
+        }
     }
     return cases;
 }
@@ -60,7 +63,7 @@ int runShot(const ShotCase& c, const std::string& out_png, std::string& log) {
     command += quoted(GRIDCULL_EXE) + " shot " + quoted((source / c.scene).string()) +
                " --frame " + std::to_string(c.frame) + " --view " + c.view + " --algo " +
                c.algo + " --width " + std::to_string(c.width) + " --height " +
-               std::to_string(c.height) + " --out " + quoted(out_png) + " > " +
+               std::to_string(c.height) + " " + c.extra + " --out " + quoted(out_png) + " > " +
                quoted(log_path) + " 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(log_path);

@@ -1,0 +1,54 @@
+// Seeds for randomized tests (issue 5: "a --seed on every random test"). A test
+// loops over seedsToRun(first, count); the environment variable GRIDCULL_SEED,
+// when set, replaces those seeds by that one. withSeed() runs one seed's body
+// and, if it failed, adds a failure that names the seed and the one command
+// that replays it:
+//   GRIDCULL_SEED=17 /path/to/core_tests --gtest_filter=Suite.Test
+#pragma once
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace gridcull::test {
+
+inline std::vector<uint64_t> seedsToRun(uint64_t first, int count) {
+    if (const char* env = std::getenv("GRIDCULL_SEED")) {
+        if (*env != '\0') return {std::strtoull(env, nullptr, 10)};
+    }
+    std::vector<uint64_t> seeds;
+    for (int i = 0; i < count; ++i) seeds.push_back(first + uint64_t(i));
+    return seeds;
+}
+
+// True when GRIDCULL_SEED picks one seed (tests that count over all their seeds
+// skip such totals then).
+inline bool singleSeedRun() {
+    const char* env = std::getenv("GRIDCULL_SEED");
+    return env && *env != '\0';
+}
+
+// The command that runs the current test again on `seed` alone.
+inline std::string replayCommand(uint64_t seed) {
+    char exe[4096];
+    const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    const std::string path = n > 0 ? std::string(exe, size_t(n)) : std::string("core_tests");
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string filter =
+        info ? std::string(info->test_suite_name()) + "." + info->name() : std::string("*");
+    return "GRIDCULL_SEED=" + std::to_string(seed) + " " + path + " --gtest_filter=" + filter;
+}
+
+template <class Body>
+void withSeed(uint64_t seed, Body&& body) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const bool had_failure = ::testing::Test::HasFailure();
+    body();
+    if (!had_failure && ::testing::Test::HasFailure())
+        ADD_FAILURE() << "seed " << seed << " failed; replay it with: " << replayCommand(seed);
+}
+
+}  // namespace gridcull::test
