@@ -7,11 +7,22 @@
 
 #include "app/cli_args.h"
 #include "app/window.h"
+#include "culling/exact_oracle.h"
 #include "culling/scene_loader.h"
 
 namespace gridcull {
 
 namespace {
+
+// The smallest --oracle-res and --oracle-rays accepted: below them the oracle
+// resolves too little to be worth calling exact.
+constexpr int kMinOracleResolutionFlag = 16;
+constexpr int kMinOracleRaysFlag = 64;
+// rgvc's knobs: a TBV valid for less than a millisecond or longer than a day
+// means nothing in a scene of frames; 8192 is the 2D grid budget's side.
+constexpr double kMinRgvcValidity = 0.001;
+constexpr double kMaxRgvcValidity = 86400.0;
+constexpr int kMaxGridResFlag = 8192;
 
 const char* const kTopHelp =
     "gridcull: see occlusion culling work, frame by frame.\n"
@@ -31,22 +42,74 @@ const char* const kTopHelp =
 
 }  // namespace
 
-const char* const kCullerOptionsHelp =
-    "  --oracle-res N     exact, 3D: pixels on the long side of the ID buffer (default 1024)\n"
-    "  --oracle-rays N    exact, 2D: rays per full turn of the sweep (default 16384)\n";
+namespace {
+
+// Built from the constants that enforce the limits, so help cannot drift from
+// them (docs/LIMITS.md lists them all). Every culling command prints it.
+std::string cullerOptionsHelpText() {
+    char text[2048];
+    std::snprintf(text, sizeof text,
+                  "  --oracle-res N     exact, 3D: pixels on the long side of the ID buffer,\n"
+                  "                     %d..%d (default 1024)\n"
+                  "  --oracle-rays N    exact, 2D: rays per full turn of the sweep, %d..%d\n"
+                  "                     (default 16384)\n"
+                  "  --rgvc-validity S  rgvc: validity period of a TBV in seconds, %g..%g\n"
+                  "                     (default 0.5; shorter: fewer revealed TBVs, more updates)\n"
+                  "  --grid-res N       rgvc: voxels along the world's longest axis, 1..%d\n"
+                  "                     (default: the scene's grid.resolution)\n"
+                  "\n"
+                  "scene limits (docs/LIMITS.md); a file beyond them is rejected, exit status 3:\n"
+                  "  every number       finite and at most %.0f in magnitude (coordinates,\n"
+                  "                     sizes, speeds, times)\n"
+                  "  grid.resolution    at most %lld voxels in all (2D: 8192 x 8192; 3D: 406^3)\n"
+                  "  camera.fov_deg     3D: in (0, 180); 2D: in (0, 360]\n"
+                  "  camera.near, far   0 < near < far; aspect > 0\n"
+                  "  objects            at most %lld, listed and generated together\n"
+                  "  time.frames        1 to %lld; time.dt > 0\n",
+                  kMinOracleResolutionFlag, kMaxOracleResolution, kMinOracleRaysFlag,
+                  kMaxOracleRaysPerTurn, kMinRgvcValidity, kMaxRgvcValidity, kMaxGridResFlag,
+                  kMaxSceneCoordinate, (long long)kMaxGridVoxels, (long long)kMaxSceneObjects,
+                  (long long)kMaxSceneFrames);
+    return text;
+}
+
+const std::string& cullerOptionsHelp() {
+    static const std::string text = cullerOptionsHelpText();
+    return text;
+}
+
+}  // namespace
+
+const char* const kCullerOptionsHelp = cullerOptionsHelp().c_str();
 
 bool readCullerOptions(CliArgs& args, CullerOptions& options) {
     long long res = options.oracle_resolution;
     long long rays = options.oracle_rays_per_turn;
-    if (!args.integer("oracle-res", 16, 8192, res)) return false;
-    if (!args.integer("oracle-rays", 64, 1 << 22, rays)) return false;
+    if (!args.integer("oracle-res", kMinOracleResolutionFlag, kMaxOracleResolution, res))
+        return false;
+    if (!args.integer("oracle-rays", kMinOracleRaysFlag, kMaxOracleRaysPerTurn, rays)) return false;
+    long long grid_res = options.rgvc_grid_resolution;
+    if (!args.number("rgvc-validity", kMinRgvcValidity, kMaxRgvcValidity,
+                     options.rgvc_validity_s) ||
+        !args.integer("grid-res", 1, kMaxGridResFlag, grid_res))
+        return false;
     options.oracle_resolution = int(res);
     options.oracle_rays_per_turn = int(rays);
+    options.rgvc_grid_resolution = int(grid_res);
     return true;
 }
 
-bool splitAlgorithms(const std::string& list, std::vector<std::string>& names,
-                     std::string& error) {
+std::string describeCullerOptions(const CullerOptions& options) {
+    char text[256];
+    std::snprintf(text, sizeof text, "oracle-res=%d oracle-rays=%d rgvc-validity=%g grid-res=%s",
+                  options.oracle_resolution, options.oracle_rays_per_turn, options.rgvc_validity_s,
+                  options.rgvc_grid_resolution > 0
+                      ? std::to_string(options.rgvc_grid_resolution).c_str()
+                      : "scene");
+    return text;
+}
+
+bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error) {
     names.clear();
     const std::vector<std::string> known = cullerNames();
     std::stringstream in(list);

@@ -31,8 +31,9 @@ int usageError(const char* command, const std::string& message);
 extern const char* const kCullerOptionsHelp;
 class CliArgs;
 bool readCullerOptions(CliArgs& args, CullerOptions& options);
+// One line naming every option's value, printed by bench so a table says what it measured.
+std::string describeCullerOptions(const CullerOptions& options);
 // Checks that every name in a comma-separated list is an algorithm.
-bool splitAlgorithms(const std::string& list, std::vector<std::string>& names,
-                     std::string& error);
+bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error);
 
 }  // namespace gridcull

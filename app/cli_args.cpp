@@ -1,6 +1,7 @@
 #include "app/cli_args.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 namespace gridcull {
@@ -52,7 +53,9 @@ bool CliArgs::parse(int argc, char** argv, int first) {
     return true;
 }
 
-bool CliArgs::has(const std::string& flag) const { return values_.count(flag) != 0; }
+bool CliArgs::has(const std::string& flag) const {
+    return values_.count(flag) != 0;
+}
 
 std::string CliArgs::text(const std::string& flag, const std::string& fallback) const {
     const auto it = values_.find(flag);
@@ -67,8 +70,24 @@ bool CliArgs::integer(const std::string& flag, long long lo, long long hi, long 
     errno = 0;
     const long long v = std::strtoll(s.c_str(), &end, 10);
     if (s.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
-        error_ = "option --" + flag + ": expected an integer from " + std::to_string(lo) +
-                 " to " + std::to_string(hi) + ", got '" + s + "'";
+        error_ = "option --" + flag + ": expected an integer from " + std::to_string(lo) + " to " +
+                 std::to_string(hi) + ", got '" + s + "'";
+        return false;
+    }
+    value = v;
+    return true;
+}
+
+bool CliArgs::number(const std::string& flag, double lo, double hi, double& value) {
+    const auto it = values_.find(flag);
+    if (it == values_.end()) return true;  // keep the caller's default
+    const std::string& s = it->second;
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v) || v < lo || v > hi) {
+        error_ = "option --" + flag + ": expected a number from " + std::to_string(lo) + " to " +
+                 std::to_string(hi) + ", got '" + s + "'";
         return false;
     }
     value = v;

@@ -23,6 +23,8 @@ public:
     std::string text(const std::string& flag, const std::string& fallback) const;
     // Integer flag within [lo, hi]; returns false and sets error() if malformed.
     bool integer(const std::string& flag, long long lo, long long hi, long long& value);
+    // Finite number flag within [lo, hi]; returns false and sets error() if malformed.
+    bool number(const std::string& flag, double lo, double hi, double& value);
 
 private:
     std::set<std::string> value_flags_;

@@ -3,10 +3,10 @@
 // algorithms take turns, starting with a different one each frame, so that machine
 // noise falls on all of them alike. Quality (PVS against the exact visible set) is
 // measured in the first run by a separate, untimed oracle.
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 #include "app/bench_table.h"
 #include "app/cli.h"
@@ -74,8 +74,9 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
 }  // namespace
 
 int runBenchCommand(int argc, char** argv, int first) {
-    CliArgs args({"algo", "frames", "runs", "csv", "oracle-res", "oracle-rays"},
-                 {"help", "no-quality"});
+    CliArgs args(
+        {"algo", "frames", "runs", "csv", "oracle-res", "oracle-rays", "rgvc-validity", "grid-res"},
+        {"help", "no-quality"});
     if (!args.parse(argc, argv, first)) return usageError("bench", args.error());
     if (args.has("help")) {
         std::string names;
@@ -129,6 +130,7 @@ int runBenchCommand(int argc, char** argv, int first) {
     std::printf("scene: %s (%dD, %zu objects), frames 0..%d, %d runs, algorithms: %s\n",
                 scene.name.c_str(), scene.dimensions, scene.objects.size(), n_frames - 1, n_runs,
                 args.text("algo", "").c_str());
+    std::printf("options: %s\n", describeCullerOptions(options).c_str());
     std::fflush(stdout);
 
     ProgressBar progress(frames * runs);

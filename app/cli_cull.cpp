@@ -27,7 +27,9 @@ const char* const kCullHelp =
 }  // namespace
 
 int runCullCommand(int argc, char** argv, int first) {
-    CliArgs args({"algo", "frames", "out", "oracle-res", "oracle-rays"}, {"help"});
+    CliArgs args(
+        {"algo", "frames", "out", "oracle-res", "oracle-rays", "rgvc-validity", "grid-res"},
+        {"help"});
     if (!args.parse(argc, argv, first)) return usageError("cull", args.error());
     if (args.has("help")) {
         std::printf("%s%s", kCullHelp, kCullerOptionsHelp);

@@ -74,14 +74,14 @@ bool checkAlgo(const ViewOptions& view, std::string& error) {
 
 int runShotCommand(int argc, char** argv, int first) {
     CliArgs args({"frame", "out", "view", "algo", "width", "height", "oracle-res", "oracle-rays",
-                  "layer", "occluder"},
+                  "rgvc-validity", "grid-res", "layer", "occluder"},
                  {"help"});
     if (!args.parse(argc, argv, first)) return usageError("shot", args.error());
     if (args.has("help")) {
-        std::printf("%s%s\n  --algo A           the algorithm that colours the objects "
-                    "(default vfc)\n%s%s%s",
-                    kShotHelp, viewNamesHelp(), kShotRgvcHelp, kWindowFlagsHelp,
-                    kCullerOptionsHelp);
+        std::printf(
+            "%s%s\n  --algo A           the algorithm that colours the objects "
+            "(default vfc)\n%s%s%s",
+            kShotHelp, viewNamesHelp(), kShotRgvcHelp, kWindowFlagsHelp, kCullerOptionsHelp);
         return kExitOk;
     }
     if (args.positional().size() != 1) return usageError("shot", "expected one SCENE file");
@@ -113,7 +113,8 @@ int runShotCommand(int argc, char** argv, int first) {
 }
 
 int runViewCommand(int argc, char** argv, int first) {
-    CliArgs args({"frame", "algo", "width", "height", "exit-after", "oracle-res", "oracle-rays"},
+    CliArgs args({"frame", "algo", "width", "height", "exit-after", "oracle-res", "oracle-rays",
+                  "rgvc-validity", "grid-res"},
                  {"help", "play"});
     if (!args.parse(argc, argv, first)) return usageError("view", args.error());
     if (args.has("help")) {

@@ -33,20 +33,26 @@ namespace gridcull {
 constexpr double kRasterSlack = 1e-9;  // voxel widths
 constexpr double kOpaqueSnap = 1e-10;  // voxel widths
 
+// A voxel index as an int, clamped on both sides (and NaN to the low side) so
+// that an object billions of voxels away never overflows the conversion.
+inline int clampedVoxelIndex(double v) {
+    return int(!(v >= -2.0e9) ? -2.0e9 : v > 2.0e9 ? 2.0e9 : v);
+}
+
 // Voxel index range [lo, hi] along one axis of the voxels whose closed extent
 // meets the closed interval [a, b] (world units), unclipped.
 inline void touchedRange(double a, double b, double origin, double size, int& lo, int& hi) {
     const double ua = (a - origin) / size, ub = (b - origin) / size;
-    lo = int(std::max(-2.0e9, std::ceil(ua - kRasterSlack) - 1.0));
-    hi = int(std::min(2.0e9, std::floor(ub + kRasterSlack)));
+    lo = clampedVoxelIndex(std::ceil(ua - kRasterSlack) - 1.0);
+    hi = clampedVoxelIndex(std::floor(ub + kRasterSlack));
 }
 
 // Voxel index range [lo, hi] of the voxels whose extent lies inside [a, b]
 // (up to kOpaqueSnap).
 inline void insideRange(double a, double b, double origin, double size, int& lo, int& hi) {
     const double ua = (a - origin) / size, ub = (b - origin) / size;
-    lo = int(std::max(-2.0e9, std::ceil(ua - kOpaqueSnap)));
-    hi = int(std::min(2.0e9, std::floor(ub + kOpaqueSnap) - 1.0));
+    lo = clampedVoxelIndex(std::ceil(ua - kOpaqueSnap));
+    hi = clampedVoxelIndex(std::floor(ub + kOpaqueSnap) - 1.0);
 }
 
 template <typename Touched, typename Inside>

@@ -19,9 +19,10 @@ glm::ivec3 RegularGrid::voxelOf(const glm::dvec3& p) const {
     const glm::dvec3 rel = (p - world.min) / voxelSize();
     glm::ivec3 v;
     for (int axis = 0; axis < 3; ++axis) {
-        // Clamp before the cast: a point far outside must not overflow an int.
+        // Clamp before the cast: a point far outside must not overflow an int,
+        // and a NaN (a degenerate grid or point) must not reach the cast either.
         const double f = std::floor(rel[axis]);
-        v[axis] = f < -1e9 ? -1000000000 : f > 1e9 ? 1000000000 : int(f);
+        v[axis] = !(f >= -1e9) ? -1000000000 : f > 1e9 ? 1000000000 : int(f);
     }
     if (dimensions == 2) v.z = 0;
     return v;

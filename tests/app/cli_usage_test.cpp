@@ -31,7 +31,10 @@ TEST(CliUsage, BadCommandLinesExitTwo) {
           "bench " + scene + " --algo vfc,,all", "bench " + scene + " --algo vfc --runs -1",
           "shot " + scene + " --frame 1", "shot " + scene + " --out x.png",
           "shot " + scene + " --frame 999999 --out x.png",
-          "cull " + scene + " --algo vfc --oracle-res 3"};
+          "cull " + scene + " --algo vfc --oracle-res 3",
+          "cull " + scene + " --algo rgvc --rgvc-validity 0",
+          "bench " + scene + " --algo rgvc --rgvc-validity nan",
+          "bench " + scene + " --algo rgvc --grid-res 0"};
     for (const std::string& args : cases) {
         const CommandResult r = runGridcull(args);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;

@@ -5,10 +5,10 @@
 // that replays it:
 //   GRIDCULL_SEED=17 /path/to/core_tests --gtest_filter=Suite.Test
 #pragma once
+#include <unistd.h>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include <gtest/gtest.h>
