@@ -7,7 +7,7 @@
 // RgvcSweep.Full: the full sweep, 1000 scenes x 20 frames, part of the default
 // run (a few seconds). A longer sweep:
 //   GRIDCULL_SWEEP_SCENES=10000 build/tests/core_tests --gtest_filter='RgvcSweep.*' On failure the seed and
-// frame are printed; the seed alone rebuilds the scene.
+// frame are printed with the command that replays it (GRIDCULL_SEED=N).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "culling/exact_oracle.h"
+#include "tests/common/test_seeds.h"
 #include "culling/rgvc_culler.h"
 #include "culling/vfc_culler.h"
 #include "rgvc_random_scene.h"
@@ -89,14 +90,13 @@ void report(const char* name, int scenes, const SweepTotals& totals) {
 TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
     constexpr int kScenes = 100;
     SweepTotals totals;
-    for (int i = 0; i < kScenes; ++i) {
-        SCOPED_TRACE("seed " + std::to_string(1000 + i));
-        runScene(uint64_t(1000 + i), CullerOptions{}, totals);
-    }
-    report("default run", kScenes, totals);
+    const std::vector<uint64_t> seeds = test::seedsToRun(1000, kScenes);
+    for (const uint64_t seed : seeds)
+        test::withSeed(seed, [&] { runScene(seed, CullerOptions{}, totals); });
+    report("default run", int(seeds.size()), totals);
     EXPECT_EQ(totals.false_culls, 0);
     // Culling must do something on these scenes: far fewer than all objects.
-    EXPECT_LT(totals.pvs, totals.objects);
+    if (!test::singleSeedRun()) EXPECT_LT(totals.pvs, totals.objects);
 }
 
 TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
@@ -104,10 +104,9 @@ TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
     for (const double validity : {0.05, 5.0}) {
         CullerOptions options;
         options.rgvc_validity_s = validity;
-        for (int i = 0; i < 20; ++i) {
-            SCOPED_TRACE("seed " + std::to_string(5000 + i) + " validity " + std::to_string(validity));
-            runScene(uint64_t(5000 + i), options, totals);
-        }
+        SCOPED_TRACE("validity " + std::to_string(validity));
+        for (const uint64_t seed : test::seedsToRun(5000, 20))
+            test::withSeed(seed, [&] { runScene(seed, options, totals); });
     }
     EXPECT_EQ(totals.false_culls, 0);
 }
@@ -117,10 +116,9 @@ TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
     for (const int resolution : {3, 97}) {
         CullerOptions options;
         options.rgvc_grid_resolution = resolution;
-        for (int i = 0; i < 10; ++i) {
-            SCOPED_TRACE("seed " + std::to_string(7000 + i) + " resolution " + std::to_string(resolution));
-            runScene(uint64_t(7000 + i), options, totals);
-        }
+        SCOPED_TRACE("resolution " + std::to_string(resolution));
+        for (const uint64_t seed : test::seedsToRun(7000, 10))
+            test::withSeed(seed, [&] { runScene(seed, options, totals); });
     }
     EXPECT_EQ(totals.false_culls, 0);
 }
@@ -129,11 +127,10 @@ TEST(RgvcSweep, Full) {
     int scenes = 1000;
     if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES")) scenes = std::max(1, std::atoi(count));
     SweepTotals totals;
-    for (int i = 0; i < scenes; ++i) {
-        SCOPED_TRACE("seed " + std::to_string(100000 + i));
-        runScene(uint64_t(100000 + i), CullerOptions{}, totals);
-    }
-    report("full sweep", scenes, totals);
+    const std::vector<uint64_t> seeds = test::seedsToRun(100000, scenes);
+    for (const uint64_t seed : seeds)
+        test::withSeed(seed, [&] { runScene(seed, CullerOptions{}, totals); });
+    report("full sweep", int(seeds.size()), totals);
     EXPECT_EQ(totals.false_culls, 0);
 }
 
