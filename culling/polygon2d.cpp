@@ -30,17 +30,6 @@ bool segmentsTouch(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
 
 }  // namespace
 
-double signedDoubleArea(const std::vector<glm::dvec3>& points) {
-    double area = 0.0;
-    const size_t n = points.size();
-    for (size_t i = 0; i < n; ++i) {
-        const glm::dvec3& p = points[i];
-        const glm::dvec3& q = points[(i + 1) % n];
-        area += p.x * q.y - q.x * p.y;
-    }
-    return area;
-}
-
 std::string checkSimpleCounterClockwise(const std::vector<glm::dvec3>& points) {
     const size_t n = points.size();
     if (n < 3) return "it has " + std::to_string(n) + " points, at least 3 are needed";

@@ -7,10 +7,9 @@
 
 #include <glm/vec3.hpp>
 
-namespace gridcull {
+#include "grid/polygon_area.h"  // signedDoubleArea
 
-// Twice the signed area in the x-y plane; positive for counter-clockwise.
-double signedDoubleArea(const std::vector<glm::dvec3>& points);
+namespace gridcull {
 
 // Empty when `points` (x-y plane, z ignored) form a simple polygon with at
 // least 3 corners in counter-clockwise order; otherwise what is wrong, phrased

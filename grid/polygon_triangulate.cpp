@@ -1,4 +1,5 @@
 #include "grid/polygon_triangulate.h"
+#include "grid/polygon_area.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,23 +22,12 @@ bool inTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
 
 bool samePoint(const glm::dvec3& a, const glm::dvec3& b) { return a.x == b.x && a.y == b.y; }
 
-// Twice the signed area in the x-y plane: positive for counter-clockwise order.
-double doubleArea(const std::vector<glm::dvec3>& points) {
-    double sum = 0.0;
-    const size_t n = points.size();
-    for (size_t i = 0; i < n; ++i) {
-        const glm::dvec3& p = points[i];
-        const glm::dvec3& q = points[(i + 1) % n];
-        sum += p.x * q.y - q.x * p.y;
-    }
-    return sum;
-}
 
 }  // namespace
 
 bool triangulatePolygon(const std::vector<glm::dvec3>& points, std::vector<uint32_t>& triangles) {
     triangles.clear();
-    const double area2 = doubleArea(points);
+    const double area2 = signedDoubleArea(points);
     if (points.size() < 3 || !(std::abs(area2) > 0.0) || !std::isfinite(area2)) return false;
 
     // The remaining outline as indices, counter-clockwise, without repeated points.
