@@ -23,6 +23,9 @@ constexpr int kMinOracleRaysFlag = 64;
 constexpr double kMinRgvcValidity = 0.001;
 constexpr double kMaxRgvcValidity = 86400.0;
 constexpr int kMaxGridResFlag = 8192;
+// The lazy grid's cells: one pixel is the finest possible, 1024 more than any
+// view needs (a cell larger than the image is one cell).
+constexpr int kMaxCellSizeFlag = 1024;
 
 const char* const kTopHelp =
     "gridcull: see occlusion culling work, frame by frame.\n"
@@ -47,7 +50,7 @@ namespace {
 // Built from the constants that enforce the limits, so help cannot drift from
 // them (docs/LIMITS.md lists them all). Every culling command prints it.
 std::string cullerOptionsHelpText() {
-    char text[2048];
+    char text[4096];
     std::snprintf(text, sizeof text,
                   "  --oracle-res N     exact, 3D: pixels on the long side of the ID buffer,\n"
                   "                     %d..%d (default 1024)\n"
@@ -57,6 +60,19 @@ std::string cullerOptionsHelpText() {
                   "                     (default 0.5; shorter: fewer revealed TBVs, more updates)\n"
                   "  --grid-res N       rgvc: voxels along the world's longest axis, 1..%d\n"
                   "                     (default: the scene's grid.resolution)\n"
+                  "  --lazy-res N       lazy-grid, lazy-grid-z, busy-grid: pixels on the long\n"
+                  "                     side of the software buffers, %d..%d (default: the\n"
+                  "                     --oracle-res value, so false culls compare like with like)\n"
+                  "  --cell-size N      lazy / busy grid: cell side in pixels, 1..%d (default 32;\n"
+                  "                     smaller: more cells to read, fewer pixels per query)\n"
+                  "  --lazy-prob P      lazy / busy grid, section 6: rate a cell free without a\n"
+                  "                     pixel query while less than P of it was drawn into, 0..1\n"
+                  "                     (default 0, off)\n"
+                  "  --lazy-border-whole F\n"
+                  "                     lazy / busy grid, section 6: query a border cell whole\n"
+                  "                     when the box covers more than F of it, 0..1 (default 0, off)\n"
+                  "  --lazy-large-box F lazy / busy grid, section 6: border cells count as\n"
+                  "                     internal for a box over F of the image, 0..1 (default 0, off)\n"
                   "\n"
                   "scene limits (docs/LIMITS.md); a file beyond them is rejected, exit status 3:\n"
                   "  every number       finite and at most %.0f in magnitude (coordinates,\n"
@@ -68,6 +84,7 @@ std::string cullerOptionsHelpText() {
                   "  time.frames        1 to %lld; time.dt > 0\n",
                   kMinOracleResolutionFlag, kMaxOracleResolution, kMinOracleRaysFlag,
                   kMaxOracleRaysPerTurn, kMinRgvcValidity, kMaxRgvcValidity, kMaxGridResFlag,
+                  kMinOracleResolutionFlag, kMaxOracleResolution, kMaxCellSizeFlag,
                   kMaxSceneCoordinate, (long long)kMaxGridVoxels, (long long)kMaxSceneObjects,
                   (long long)kMaxSceneFrames);
     return text;
@@ -93,19 +110,42 @@ bool readCullerOptions(CliArgs& args, CullerOptions& options) {
                      options.rgvc_validity_s) ||
         !args.integer("grid-res", 1, kMaxGridResFlag, grid_res))
         return false;
+    long long lazy_res = options.lazy_resolution, cell_size = options.lazy_cell_size;
+    if (args.has("lazy-res") &&
+        !args.integer("lazy-res", kMinOracleResolutionFlag, kMaxOracleResolution, lazy_res))
+        return false;
+    if (!args.integer("cell-size", 1, kMaxCellSizeFlag, cell_size) ||
+        !args.number("lazy-prob", 0.0, 1.0, options.lazy_probability_threshold) ||
+        !args.number("lazy-border-whole", 0.0, 1.0, options.lazy_border_whole_fraction) ||
+        !args.number("lazy-large-box", 0.0, 1.0, options.lazy_large_box_fraction))
+        return false;
     options.oracle_resolution = int(res);
     options.oracle_rays_per_turn = int(rays);
     options.rgvc_grid_resolution = int(grid_res);
+    options.lazy_resolution = int(lazy_res);
+    options.lazy_cell_size = int(cell_size);
     return true;
 }
 
+std::set<std::string> withCullerOptionFlags(std::set<std::string> own) {
+    own.insert({"oracle-res", "oracle-rays", "rgvc-validity", "grid-res", "lazy-res", "cell-size",
+                "lazy-prob", "lazy-border-whole", "lazy-large-box"});
+    return own;
+}
+
 std::string describeCullerOptions(const CullerOptions& options) {
-    char text[256];
-    std::snprintf(text, sizeof text, "oracle-res=%d oracle-rays=%d rgvc-validity=%g grid-res=%s",
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "oracle-res=%d oracle-rays=%d rgvc-validity=%g grid-res=%s lazy-res=%s "
+                  "cell-size=%d lazy-prob=%g lazy-border-whole=%g lazy-large-box=%g",
                   options.oracle_resolution, options.oracle_rays_per_turn, options.rgvc_validity_s,
                   options.rgvc_grid_resolution > 0
                       ? std::to_string(options.rgvc_grid_resolution).c_str()
-                      : "scene");
+                      : "scene",
+                  options.lazy_resolution > 0 ? std::to_string(options.lazy_resolution).c_str()
+                                              : "oracle",
+                  options.lazy_cell_size, options.lazy_probability_threshold,
+                  options.lazy_border_whole_fraction, options.lazy_large_box_fraction);
     return text;
 }
 

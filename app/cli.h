@@ -1,6 +1,7 @@
 // The `gridcull` command line (shared/spec/cli.md). Every subcommand returns an
 // exit status: 0 done, 2 bad command line, 3 scene rejected, 1 anything else.
 #pragma once
+#include <set>
 #include <string>
 
 #include "culling/culler.h"
@@ -31,6 +32,8 @@ int usageError(const char* command, const std::string& message);
 extern const char* const kCullerOptionsHelp;
 class CliArgs;
 bool readCullerOptions(CliArgs& args, CullerOptions& options);
+// A command's own value flags plus every flag readCullerOptions reads.
+std::set<std::string> withCullerOptionFlags(std::set<std::string> own);
 // One line naming every option's value, printed by bench so a table says what it measured.
 std::string describeCullerOptions(const CullerOptions& options);
 // Checks that every name in a comma-separated list is an algorithm.

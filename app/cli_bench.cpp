@@ -75,7 +75,7 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
 
 int runBenchCommand(int argc, char** argv, int first) {
     CliArgs args(
-        {"algo", "frames", "runs", "csv", "oracle-res", "oracle-rays", "rgvc-validity", "grid-res"},
+        withCullerOptionFlags({"algo", "frames", "runs", "csv"}),
         {"help", "no-quality"});
     if (!args.parse(argc, argv, first)) return usageError("bench", args.error());
     if (args.has("help")) {

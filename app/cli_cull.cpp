@@ -28,7 +28,7 @@ const char* const kCullHelp =
 
 int runCullCommand(int argc, char** argv, int first) {
     CliArgs args(
-        {"algo", "frames", "out", "oracle-res", "oracle-rays", "rgvc-validity", "grid-res"},
+        withCullerOptionFlags({"algo", "frames", "out"}),
         {"help"});
     if (!args.parse(argc, argv, first)) return usageError("cull", args.error());
     if (args.has("help")) {

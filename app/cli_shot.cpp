@@ -73,8 +73,8 @@ bool checkAlgo(const ViewOptions& view, std::string& error) {
 }  // namespace
 
 int runShotCommand(int argc, char** argv, int first) {
-    CliArgs args({"frame", "out", "view", "algo", "width", "height", "oracle-res", "oracle-rays",
-                  "rgvc-validity", "grid-res", "layer", "occluder"},
+    CliArgs args(withCullerOptionFlags(
+                     {"frame", "out", "view", "algo", "width", "height", "layer", "occluder"}),
                  {"help"});
     if (!args.parse(argc, argv, first)) return usageError("shot", args.error());
     if (args.has("help")) {
@@ -113,8 +113,7 @@ int runShotCommand(int argc, char** argv, int first) {
 }
 
 int runViewCommand(int argc, char** argv, int first) {
-    CliArgs args({"frame", "algo", "width", "height", "exit-after", "oracle-res", "oracle-rays",
-                  "rgvc-validity", "grid-res"},
+    CliArgs args(withCullerOptionFlags({"frame", "algo", "width", "height", "exit-after"}),
                  {"help", "play"});
     if (!args.parse(argc, argv, first)) return usageError("view", args.error());
     if (args.has("help")) {

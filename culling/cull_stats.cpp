@@ -29,6 +29,16 @@ const char* counterName(Counter counter) {
             return "objects_tested";
         case Counter::PixelsSampled:
             return "pixels_sampled";
+        case Counter::OcclusionTests:
+            return "occlusion_tests";
+        case Counter::PixelsRead:
+            return "pixels_read";
+        case Counter::CellUpdates:
+            return "cell_updates";
+        case Counter::BvhRebuilds:
+            return "bvh_rebuilds";
+        case Counter::ProbabilitySkips:
+            return "probability_skips";
         case Counter::Count:
             break;
     }

@@ -21,6 +21,11 @@ enum class Counter : int {
     TrianglesDrawn,
     ObjectsTested,  // objects a culler looked at this frame (vfc, exact)
     PixelsSampled,  // rays or pixels the oracle evaluated
+    OcclusionTests,    // lazy / busy grid: isOccluded calls (Hey et al. Fig. 2, 3)
+    PixelsRead,        // lazy / busy grid: pixels read by its pixel-level queries
+    CellUpdates,       // lazy / busy grid: pixel queries that read a whole cell
+    BvhRebuilds,       // lazy / busy grid: hierarchy rebuilt from scratch this frame
+    ProbabilitySkips,  // lazy / busy grid: pixel queries saved by section 6's threshold
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

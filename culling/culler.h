@@ -49,6 +49,20 @@ struct CullerOptions {
     // rgvc: voxels along the world's longest axis, the other axis in proportion;
     // 0 keeps the scene's grid.resolution.
     int rgvc_grid_resolution = 0;
+    // lazy-grid, lazy-grid-z, busy-grid: pixels on the long side of the software
+    // buffers, the other side from the camera's aspect; 0 = oracle_resolution (so
+    // the window's false-cull check compares like with like).
+    int lazy_resolution = 0;
+    // lazy / busy grid: cell side in pixels (Hey et al. used 32).
+    int lazy_cell_size = 32;
+    // lazy / busy grid, Hey et al. section 6, each 0 = off: rate a cell free without
+    // a pixel query while the area drawn into it is below this fraction of it...
+    double lazy_probability_threshold = 0.0;
+    // ...query a border cell whole when the box covers more than this fraction of it...
+    double lazy_border_whole_fraction = 0.0;
+    // ...treat border cells as internal for a box covering more than this fraction
+    // of the image.
+    double lazy_large_box_fraction = 0.0;
 };
 
 // Every algorithm name `--algo` accepts, in the order they are listed in help.

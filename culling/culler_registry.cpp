@@ -4,13 +4,14 @@
 #include "culling/all_culler.h"
 #include "culling/culler.h"
 #include "culling/exact_oracle.h"
+#include "culling/lazy_grid_culler.h"
 #include "culling/rgvc_culler.h"
 #include "culling/vfc_culler.h"
 
 namespace gridcull {
 
 std::vector<std::string> cullerNames() {
-    return {"all", "vfc", "exact", "rgvc"};
+    return {"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z", "busy-grid"};
 }
 
 std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& options,
@@ -19,6 +20,15 @@ std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& o
     if (name == "vfc") return std::make_unique<VfcCuller>();
     if (name == "exact") return std::make_unique<ExactOracle>(options);
     if (name == "rgvc") return std::make_unique<RgvcCuller>(options);
+    if (name == "lazy-grid")
+        return std::make_unique<LazyGridCuller>(LazyGridVariant::OcclusionBuffer,
+                                                LazyGridUpdate::Lazy, options);
+    if (name == "lazy-grid-z")
+        return std::make_unique<LazyGridCuller>(LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy,
+                                                options);
+    if (name == "busy-grid")
+        return std::make_unique<LazyGridCuller>(LazyGridVariant::OcclusionBuffer,
+                                                LazyGridUpdate::Busy, options);
     std::string known;
     for (const std::string& n : cullerNames()) known += (known.empty() ? "" : ", ") + n;
     error = "unknown algorithm '" + std::string(name) + "', expected one of: " + known;

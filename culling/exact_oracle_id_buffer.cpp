@@ -45,10 +45,12 @@ void OracleIdBuffer::begin(const Camera& camera) {
     std::fill(depth_.begin(), depth_.end(), std::numeric_limits<double>::infinity());
     std::fill(index_.begin(), index_.end(), -1);
     std::fill(tile_far_.begin(), tile_far_.end(), std::numeric_limits<double>::infinity());
-    dirty_cols_ = dirty_rows_ = ScreenRange{INT_MAX, -1};
+    dirty_cols_ = dirty_rows_ = last_cols_ = last_rows_ = ScreenRange{INT_MAX, -1};
 }
 
 void OracleIdBuffer::refreshTiles() {
+    last_cols_ = dirty_cols_;
+    last_rows_ = dirty_rows_;
     if (dirty_cols_.empty() || dirty_rows_.empty()) return;
     for (int ty = dirty_rows_.lo / kTile; ty <= dirty_rows_.hi / kTile; ++ty) {
         const int row_end = std::min(height_, (ty + 1) * kTile);

@@ -73,6 +73,14 @@ public:
     // enough for every index drawn. O(pixels).
     void markVisible(std::vector<char>& seen) const;
 
+    // Read access for the lazy occlusion grid (culling/lazy_grid.h), which uses this
+    // buffer as its software z-buffer: row py's depths (+infinity where nothing was
+    // drawn), and the pixel rectangle that the last draw call returning true may
+    // have written (a call returning false writes nothing and leaves it as it was).
+    const double* depthRow(int py) const { return depth_.data() + size_t(py) * size_t(width_); }
+    ScreenRange lastDrawCols() const { return last_cols_; }
+    ScreenRange lastDrawRows() const { return last_rows_; }
+
 private:
     struct ScreenVertex {
         double x, y;   // continuous pixel coordinates, pixel centres at +0.5
@@ -136,6 +144,8 @@ private:
     int tiles_y_ = 0;
     ScreenRange dirty_cols_{INT_MAX, -1};  // written since the last refreshTiles()
     ScreenRange dirty_rows_{INT_MAX, -1};
+    ScreenRange last_cols_{INT_MAX, -1};  // the dirty rectangle of the last draw
+    ScreenRange last_rows_{INT_MAX, -1};
 
     glm::dvec3 eye_{0.0}, right_{1, 0, 0}, up_{0, 1, 0}, forward_{0, 0, 1};
     double tan_x_ = 1.0, tan_y_ = 1.0;

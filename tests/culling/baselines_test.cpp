@@ -20,7 +20,9 @@ TEST(CounterNames, AreTheSpecNamesInSnakeCase) {
     const std::vector<std::string> expected = {
         "voxels_visited", "tbv_created",     "tbv_expired",    "tbv_revealed",
         "object_updates", "update_messages", "pixel_queries",  "occlusion_queries",
-        "nodes_visited",  "triangles_drawn", "objects_tested", "pixels_sampled"};
+        "nodes_visited",  "triangles_drawn", "objects_tested", "pixels_sampled",
+        "occlusion_tests", "pixels_read",   "cell_updates",   "bvh_rebuilds",
+        "probability_skips"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {
@@ -36,7 +38,8 @@ TEST(CounterNames, AreTheSpecNamesInSnakeCase) {
 
 TEST(CullerRegistry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = cullerNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
+                                              "lazy-grid-z", "busy-grid"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, CullerOptions{}, error);

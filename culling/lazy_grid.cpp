@@ -1,0 +1,328 @@
+#include "culling/lazy_grid.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "culling/exact_oracle_id_buffer.h"
+#include "culling/occlusion_buffer.h"
+
+namespace gridcull {
+
+const char* occlusionStepName(OcclusionStep step) {
+    switch (step) {
+        case OcclusionStep::InternalWithoutPixelQuery:
+            return "internalCellIsFreeWithoutPixelquery";
+        case OcclusionStep::BorderWithoutPixelQuery:
+            return "borderCellIsFreeWithoutPixelquery";
+        case OcclusionStep::InternalWithPixelQuery:
+            return "internalCellIsFreeWithPixelquery";
+        case OcclusionStep::BorderWithPixelQuery:
+            return "borderCellIsFreeWithPixelquery";
+        case OcclusionStep::Occluded:
+            return "occluded (no step found a free cell)";
+        case OcclusionStep::OffScreen:
+            return "off screen (no pixel)";
+    }
+    return "unknown";
+}
+
+void LazyOcclusionGrid::configure(int width, int height, int cell_size, LazyGridVariant variant,
+                                  LazyGridUpdate update, const LazyGridExtensions& extensions) {
+    assert(width >= 1 && height >= 1 && cell_size >= 1);
+    variant_ = variant;
+    update_ = update;
+    extensions_ = extensions;
+    width_ = width;
+    height_ = height;
+    cell_size_ = cell_size;
+    cells_x_ = (width + cell_size - 1) / cell_size;
+    cells_y_ = (height + cell_size - 1) / cell_size;
+    const size_t count = size_t(cells_x_) * size_t(cells_y_);
+    if (cells_.size() != count) {
+        cells_.assign(count, LazyGridCell{});
+        for (auto* list : {&internal_cells_, &border_cells_, &internal_query_list_,
+                           &border_query_list_})
+            list->reserve(count);
+    }
+}
+
+void LazyOcclusionGrid::begin(const OcclusionBuffer* obuffer, const OracleIdBuffer* zbuffer) {
+    assert(variant_ != LazyGridVariant::OcclusionBuffer || obuffer);
+    assert(variant_ != LazyGridVariant::ZBuffer || zbuffer);
+    obuffer_ = obuffer;
+    zbuffer_ = zbuffer;
+    std::fill(cells_.begin(), cells_.end(), LazyGridCell{});
+    counters_ = LazyGridCounters{};
+}
+
+PixelRect LazyOcclusionGrid::cellRect(int cx, int cy) const {
+    return {cx * cell_size_, cy * cell_size_, std::min(width_, (cx + 1) * cell_size_) - 1,
+            std::min(height_, (cy + 1) * cell_size_) - 1};
+}
+
+PixelRect LazyOcclusionGrid::cellsOf(const PixelRect& pixels) const {
+    const PixelRect r = pixels.intersect({0, 0, width_ - 1, height_ - 1});
+    if (r.empty()) return {};
+    return {r.x0 / cell_size_, r.y0 / cell_size_, r.x1 / cell_size_, r.y1 / cell_size_};
+}
+
+void LazyOcclusionGrid::classify(const PixelRect& rect) {
+    internal_cells_.clear();
+    border_cells_.clear();
+    const PixelRect cells = cellsOf(rect);
+    const bool all_internal = extensions_.large_box_fraction > 0.0 &&
+                              double(rect.area()) >
+                                  extensions_.large_box_fraction * double(width_) * height_;
+    for (int cy = cells.y0; cy <= cells.y1; ++cy)
+        for (int cx = cells.x0; cx <= cells.x1; ++cx) {
+            const int index = cy * cells_x_ + cx;
+            if (all_internal || rect.contains(cellRect(cx, cy)))
+                internal_cells_.push_back(index);
+            else
+                border_cells_.push_back(index);
+        }
+}
+
+bool LazyOcclusionGrid::probablyFree(const LazyGridCell& cell, const PixelRect& cell_rect) const {
+    return extensions_.probability_threshold > 0.0 &&
+           cell.drawn_area < extensions_.probability_threshold * double(cell_rect.area());
+}
+
+long long LazyOcclusionGrid::queryFree(const PixelRect& rect) {
+    ++counters_.pixel_queries;
+    counters_.pixels_read += rect.area();
+    return obuffer_->countFree(rect);
+}
+
+double LazyOcclusionGrid::queryFar(const PixelRect& rect) {
+    ++counters_.pixel_queries;
+    counters_.pixels_read += rect.area();
+    double farthest = 0.0;
+    for (int py = rect.y0; py <= rect.y1; ++py) {
+        const double* row = zbuffer_->depthRow(py);
+        for (int px = rect.x0; px <= rect.x1; ++px) farthest = std::max(farthest, row[px]);
+    }
+    return farthest;
+}
+
+void LazyOcclusionGrid::updateCell(int index) {
+    LazyGridCell& cell = cells_[size_t(index)];
+    const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+    ++counters_.cell_updates;
+    if (variant_ == LazyGridVariant::ZBuffer) {
+        cell.zfar = queryFar(rect);
+        cell.outdated = false;
+        return;
+    }
+    const long long free = queryFree(rect);
+    if (free == 0) {
+        cell.full = true;
+        cell.state = CellState::PartiallyFree;  // irrelevant once full
+    } else {
+        cell.state = free == rect.area() ? CellState::CompletelyFree : CellState::PartiallyFree;
+    }
+}
+
+void LazyOcclusionGrid::afterDraw(const PixelRect& written) {
+    const PixelRect r = written.intersect({0, 0, width_ - 1, height_ - 1});
+    if (r.empty()) return;
+    const PixelRect cells = cellsOf(r);
+    for (int cy = cells.y0; cy <= cells.y1; ++cy)
+        for (int cx = cells.x0; cx <= cells.x1; ++cx) {
+            const int index = cy * cells_x_ + cx;
+            LazyGridCell& cell = cells_[size_t(index)];
+            cell.drawn_area += double(r.intersect(cellRect(cx, cy)).area());
+            if (update_ == LazyGridUpdate::Busy) {
+                if (!cell.full) updateCell(index);
+            } else if (variant_ == LazyGridVariant::ZBuffer) {
+                cell.outdated = true;
+            } else if (!cell.full) {
+                cell.state = CellState::Outdated;
+            }
+        }
+}
+
+bool LazyOcclusionGrid::isOccluded(const BoxOnScreen& box, OcclusionStep& step,
+                                   std::vector<CellTouch>* trace) {
+    ++counters_.occlusion_tests;
+    if (box.rect.empty()) {
+        step = OcclusionStep::OffScreen;
+        return true;
+    }
+    classify(box.rect);
+    return variant_ == LazyGridVariant::ZBuffer ? isOccludedZBuffer(box, trace, step)
+                                                : isOccludedOcclusionBuffer(box, trace, step);
+}
+
+namespace {
+
+void touch(std::vector<CellTouch>* trace, int cell, CellRole role, CellTouchKind kind,
+           bool free) {
+    if (trace) trace->push_back({cell, role, kind, free});
+}
+
+}  // namespace
+
+bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
+                                                  std::vector<CellTouch>* trace,
+                                                  OcclusionStep& step) {
+    internal_query_list_.clear();
+    border_query_list_.clear();
+    // internalCellIsFreeWithoutPixelquery
+    step = OcclusionStep::InternalWithoutPixelQuery;
+    for (int index : internal_cells_) {
+        const LazyGridCell& cell = cells_[size_t(index)];
+        if (cell.full) {
+            touch(trace, index, CellRole::Internal, CellTouchKind::State, false);
+        } else if (cell.state == CellState::Outdated) {
+            touch(trace, index, CellRole::Internal, CellTouchKind::Queued, false);
+            internal_query_list_.push_back(index);
+        } else {
+            touch(trace, index, CellRole::Internal, CellTouchKind::State, true);
+            return false;
+        }
+    }
+    // borderCellIsFreeWithoutPixelquery
+    step = OcclusionStep::BorderWithoutPixelQuery;
+    for (int index : border_cells_) {
+        const LazyGridCell& cell = cells_[size_t(index)];
+        if (cell.full) {
+            touch(trace, index, CellRole::Border, CellTouchKind::State, false);
+        } else if (cell.state == CellState::CompletelyFree) {
+            touch(trace, index, CellRole::Border, CellTouchKind::State, true);
+            return false;
+        } else {
+            touch(trace, index, CellRole::Border, CellTouchKind::Queued, false);
+            border_query_list_.push_back(index);
+        }
+    }
+    // internalCellIsFreeWithPixelquery: the lazy update of outdated internal cells.
+    step = OcclusionStep::InternalWithPixelQuery;
+    for (int index : internal_query_list_) {
+        LazyGridCell& cell = cells_[size_t(index)];
+        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+        if (probablyFree(cell, rect)) {
+            ++counters_.probability_skips;
+            touch(trace, index, CellRole::Internal, CellTouchKind::Probability, true);
+            return false;
+        }
+        updateCell(index);
+        touch(trace, index, CellRole::Internal, CellTouchKind::PixelQuery, !cell.full);
+        if (!cell.full) return false;
+    }
+    // borderCellIsFreeWithPixelquery: only the part of the cell inside the box.
+    step = OcclusionStep::BorderWithPixelQuery;
+    for (int index : border_query_list_) {
+        LazyGridCell& cell = cells_[size_t(index)];
+        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+        const PixelRect part = rect.intersect(box.rect);
+        if (probablyFree(cell, rect)) {
+            ++counters_.probability_skips;
+            touch(trace, index, CellRole::Border, CellTouchKind::Probability, true);
+            return false;
+        }
+        bool part_free;
+        if (extensions_.border_whole_fraction > 0.0 && cell.state == CellState::Outdated &&
+            double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
+            // Section 6: query the whole cell; the same pass answers the part.
+            updateCell(index);
+            part_free = !cell.full && obuffer_->countFree(part) > 0;
+        } else {
+            part_free = queryFree(part) > 0;
+            if (part_free && cell.state == CellState::Outdated)
+                cell.state = CellState::PartiallyFree;
+        }
+        touch(trace, index, CellRole::Border, CellTouchKind::PixelQuery, part_free);
+        if (part_free) return false;
+    }
+    step = OcclusionStep::Occluded;
+    return true;
+}
+
+bool LazyOcclusionGrid::isOccludedZBuffer(const BoxOnScreen& box, std::vector<CellTouch>* trace,
+                                          OcclusionStep& step) {
+    internal_query_list_.clear();
+    border_query_list_.clear();
+    const double znear = box.znear;
+    // internalCellIsFreeWithoutPixelquery
+    step = OcclusionStep::InternalWithoutPixelQuery;
+    for (int index : internal_cells_) {
+        const LazyGridCell& cell = cells_[size_t(index)];
+        if (!(znear <= cell.zfar)) {
+            touch(trace, index, CellRole::Internal, CellTouchKind::State, false);
+        } else if (cell.outdated) {
+            touch(trace, index, CellRole::Internal, CellTouchKind::Queued, false);
+            internal_query_list_.push_back(index);
+        } else {
+            touch(trace, index, CellRole::Internal, CellTouchKind::State, true);
+            return false;
+        }
+    }
+    // borderCellIsFreeWithoutPixelquery
+    step = OcclusionStep::BorderWithoutPixelQuery;
+    for (int index : border_cells_) {
+        const LazyGridCell& cell = cells_[size_t(index)];
+        if (cell.drawn_area == 0.0) {  // nothing drawn here: every pixel at zmax
+            touch(trace, index, CellRole::Border, CellTouchKind::State, true);
+            return false;
+        }
+        if (znear <= cell.zfar) {
+            touch(trace, index, CellRole::Border, CellTouchKind::Queued, false);
+            border_query_list_.push_back(index);
+        } else {
+            touch(trace, index, CellRole::Border, CellTouchKind::State, false);
+        }
+    }
+    // internalCellIsFreeWithPixelquery: the lazy update of zfar.
+    step = OcclusionStep::InternalWithPixelQuery;
+    for (int index : internal_query_list_) {
+        LazyGridCell& cell = cells_[size_t(index)];
+        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+        if (probablyFree(cell, rect)) {
+            ++counters_.probability_skips;
+            touch(trace, index, CellRole::Internal, CellTouchKind::Probability, true);
+            return false;
+        }
+        updateCell(index);
+        const bool free = znear <= cell.zfar;
+        touch(trace, index, CellRole::Internal, CellTouchKind::PixelQuery, free);
+        if (free) return false;
+    }
+    // borderCellIsFreeWithPixelquery
+    step = OcclusionStep::BorderWithPixelQuery;
+    for (int index : border_query_list_) {
+        LazyGridCell& cell = cells_[size_t(index)];
+        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+        const PixelRect part = rect.intersect(box.rect);
+        if (probablyFree(cell, rect)) {
+            ++counters_.probability_skips;
+            touch(trace, index, CellRole::Border, CellTouchKind::Probability, true);
+            return false;
+        }
+        bool free;
+        if (extensions_.border_whole_fraction > 0.0 && cell.outdated &&
+            double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
+            updateCell(index);  // section 6: the whole cell, which bounds the part too
+            free = znear <= cell.zfar;
+            if (free) {
+                // The whole cell is not behind the box; the part may still be.
+                double part_far = 0.0;
+                for (int py = part.y0; py <= part.y1; ++py) {
+                    const double* row = zbuffer_->depthRow(py);
+                    for (int px = part.x0; px <= part.x1; ++px)
+                        part_far = std::max(part_far, row[px]);
+                }
+                free = znear <= part_far;
+            }
+        } else {
+            free = znear <= queryFar(part);
+        }
+        touch(trace, index, CellRole::Border, CellTouchKind::PixelQuery, free);
+        if (free) return false;
+    }
+    step = OcclusionStep::Occluded;
+    return true;
+}
+
+}  // namespace gridcull

@@ -1,0 +1,59 @@
+#include "culling/occlusion_buffer.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "culling/exact_oracle_id_buffer.h"
+
+namespace gridcull {
+
+namespace {
+
+// Bits lo..hi (0..63, lo <= hi) of a word.
+uint64_t bitRange(int lo, int hi) {
+    const uint64_t upto_hi = hi == 63 ? ~uint64_t(0) : (uint64_t(1) << (hi + 1)) - 1;
+    return upto_hi & ~((uint64_t(1) << lo) - 1);
+}
+
+}  // namespace
+
+void OcclusionBuffer::resize(int width, int height) {
+    assert(width >= 1 && height >= 1);
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    words_per_row_ = (size_t(width) + 63) / 64;
+    bits_.assign(words_per_row_ * size_t(height), 0);
+}
+
+void OcclusionBuffer::clear() { std::fill(bits_.begin(), bits_.end(), 0); }
+
+void OcclusionBuffer::markDrawn(const OracleIdBuffer& zbuffer, const PixelRect& rect) {
+    assert(zbuffer.width() == width_ && zbuffer.height() == height_);
+    const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
+    for (int py = r.y0; py <= r.y1; ++py) {
+        const double* depth = zbuffer.depthRow(py);
+        uint64_t* row = bits_.data() + size_t(py) * words_per_row_;
+        for (int px = r.x0; px <= r.x1; ++px)
+            if (std::isfinite(depth[px])) row[px >> 6] |= uint64_t(1) << (px & 63);
+    }
+}
+
+long long OcclusionBuffer::countFree(const PixelRect& rect) const {
+    const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
+    if (r.empty()) return 0;
+    const int w0 = r.x0 >> 6, w1 = r.x1 >> 6;
+    long long occluded = 0;
+    for (int py = r.y0; py <= r.y1; ++py) {
+        const uint64_t* row = bits_.data() + size_t(py) * words_per_row_;
+        for (int w = w0; w <= w1; ++w) {
+            const int lo = w == w0 ? (r.x0 & 63) : 0;
+            const int hi = w == w1 ? (r.x1 & 63) : 63;
+            occluded += __builtin_popcountll(row[w] & bitRange(lo, hi));
+        }
+    }
+    return r.area() - occluded;
+}
+
+}  // namespace gridcull
