@@ -149,13 +149,18 @@ public:
     // The cells a pixel rectangle touches, as a rectangle of cell indices.
     PixelRect cellsOf(const PixelRect& pixels) const;
 
+    // Splits the cells a box rectangle touches into its internal cells (wholly
+    // inside it; every touched cell with the large-box extension and a large box)
+    // and its border cells. isOccluded calls it; tests and the window may too.
+    void classify(const PixelRect& rect);
+    const std::vector<int32_t>& internalCells() const { return internal_cells_; }
+    const std::vector<int32_t>& borderCells() const { return border_cells_; }
+
 private:
     bool isOccludedOcclusionBuffer(const BoxOnScreen& box, std::vector<CellTouch>* trace,
                                    OcclusionStep& step);
     bool isOccludedZBuffer(const BoxOnScreen& box, std::vector<CellTouch>* trace,
                            OcclusionStep& step);
-    // Splits the box's cells into the internal and border lists.
-    void classify(const PixelRect& rect);
     // Section 6: may this cell be rated free without reading pixels?
     bool probablyFree(const LazyGridCell& cell, const PixelRect& cell_rect) const;
     // Pixel queries. Each counts one query and the pixels it reads.

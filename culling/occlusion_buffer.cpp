@@ -40,6 +40,15 @@ void OcclusionBuffer::markDrawn(const OracleIdBuffer& zbuffer, const PixelRect& 
     }
 }
 
+void OcclusionBuffer::markOccluded(const PixelRect& rect) {
+    const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
+    for (int py = r.y0; py <= r.y1; ++py) {
+        uint64_t* row = bits_.data() + size_t(py) * words_per_row_;
+        for (int w = r.x0 >> 6; w <= r.x1 >> 6; ++w)
+            row[w] |= bitRange(w == r.x0 >> 6 ? (r.x0 & 63) : 0, w == r.x1 >> 6 ? (r.x1 & 63) : 63);
+    }
+}
+
 long long OcclusionBuffer::countFree(const PixelRect& rect) const {
     const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
     if (r.empty()) return 0;

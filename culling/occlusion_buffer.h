@@ -28,6 +28,8 @@ public:
     // Marks occluded every pixel of `rect` whose depth in `zbuffer` is finite
     // (something was drawn there). zbuffer must have this buffer's size.
     void markDrawn(const OracleIdBuffer& zbuffer, const PixelRect& rect);
+    // Marks every pixel of `rect` occluded (clipped to the image).
+    void markOccluded(const PixelRect& rect);
     // Number of free pixels in `rect` (clipped to the image). O(rows * words).
     long long countFree(const PixelRect& rect) const;
     bool occluded(int px, int py) const {
