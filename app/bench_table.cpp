@@ -49,6 +49,8 @@ BenchSummary summarize(const AlgoBench& bench, int frames, int runs) {
     bool quality = true;
     for (int f = 0; f < frames; ++f) {
         pvs_sum += bench.pvs_size[size_t(f)];
+        if (size_t(f) < bench.pvs_triangles.size())
+            s.mean_pvs_triangles += double(bench.pvs_triangles[size_t(f)]) / frames;
         if (bench.exact_size[size_t(f)] < 0) quality = false;
         exact_sum += bench.exact_size[size_t(f)];
         s.false_culls += bench.false_culls[size_t(f)];
@@ -74,11 +76,15 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
     // Ratios against the first algorithm listed: on a shared, noisy machine the
     // ratio of two algorithms timed in the same run is what holds.
     const double base = sums.front().median_ms;
+    // The algo column fits the longest label (variants like lazy-grid:cell-size=8).
+    int width = 14;
+    for (const auto& b : benches) width = std::max(width, int(b.algo.size()));
     std::string out;
-    char line[512];
-    std::snprintf(line, sizeof line, "%-14s %10s %10s %10s %9s %9s %9s %10s %9s  %s\n", "algo",
-                  "median ms", "p95 ms", ("x " + benches.front().algo).c_str(), "pvs",
-                  "exact", "pvs/exact", "false cull", "fc frames", "counters (mean per frame)");
+    char line[1024];
+    std::snprintf(line, sizeof line, "%-*s %10s %10s %10s %9s %9s %9s %10s %9s %10s  %s\n", width,
+                  "algo", "median ms", "p95 ms", ("x " + benches.front().algo).substr(0, 10).c_str(),
+                  "pvs", "exact", "pvs/exact", "false cull", "fc frames", "pvs tris",
+                  "counters (mean per frame)");
     out += line;
     for (size_t i = 0; i < benches.size(); ++i) {
         const BenchSummary& s = sums[i];
@@ -91,10 +97,11 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
         const std::string exact = s.mean_exact >= 0 ? format("%.1f", s.mean_exact) : "-";
         const std::string over = s.mean_exact >= 0 ? format("%.3f", s.pvs_over_exact) : "-";
         const std::string fc = s.mean_exact >= 0 ? std::to_string(s.false_culls) : "-";
-        std::snprintf(line, sizeof line, "%-14s %10.4g %10.4g %10s %9.1f %9s %9s %10s %9d  %s\n",
+        std::snprintf(line, sizeof line,
+                      "%-*s %10.4g %10.4g %10s %9.1f %9s %9s %10s %9d %10.0f  %s\n", width,
                       benches[i].algo.c_str(), s.median_ms, s.p95_ms, ratio.c_str(), s.mean_pvs,
                       exact.c_str(), over.c_str(), fc.c_str(), s.frames_with_false_culls,
-                      counters.c_str());
+                      s.mean_pvs_triangles, counters.c_str());
         out += line;
     }
     return out;
@@ -105,7 +112,7 @@ std::string formatBenchCsv(const std::vector<AlgoBench>& benches, int frames, in
     // Columns for every counter any algorithm reported, so all rows line up.
     uint32_t present = 0;
     for (const auto& b : benches) present |= b.stats.front().present;
-    std::string out = "algo,frame,t,cull_ms_median,cull_ms_min,pvs,exact,false_culls";
+    std::string out = "algo,frame,t,cull_ms_median,cull_ms_min,pvs,exact,false_culls,pvs_triangles";
     for (int c = 0; c < kCounterCount; ++c)
         if ((present >> c) & 1u) out += std::string(",") + counterName(Counter(c));
     out += "\n";
@@ -118,7 +125,10 @@ std::string formatBenchCsv(const std::vector<AlgoBench>& benches, int frames, in
                    format("%.6g", min_ms) + "," + std::to_string(b.pvs_size[size_t(f)]) + "," +
                    (b.exact_size[size_t(f)] >= 0 ? std::to_string(b.exact_size[size_t(f)]) : "") +
                    "," +
-                   (b.exact_size[size_t(f)] >= 0 ? std::to_string(b.false_culls[size_t(f)]) : "");
+                   (b.exact_size[size_t(f)] >= 0 ? std::to_string(b.false_culls[size_t(f)]) : "") +
+                   "," +
+                   (size_t(f) < b.pvs_triangles.size() ? std::to_string(b.pvs_triangles[size_t(f)])
+                                                       : "");
             for (int c = 0; c < kCounterCount; ++c) {
                 if (!((present >> c) & 1u)) continue;
                 const CullStats& st = b.stats[size_t(f)];

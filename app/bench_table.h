@@ -13,6 +13,7 @@ struct AlgoBench {
     std::string algo;
     std::vector<double> ms;           // [run * frames + frame]
     std::vector<int> pvs_size;        // [frame]
+    std::vector<long long> pvs_triangles;  // [frame]: triangles of the PVS's objects
     std::vector<int> exact_size;      // [frame], -1 when quality was not measured
     std::vector<int> false_culls;     // [frame]: ids exact sees that the PVS lacks
     std::vector<CullStats> stats;     // [frame], from the first run
@@ -23,6 +24,7 @@ struct BenchSummary {
     double mean_ms = 0.0;     // mean over frames of each frame's median over runs
     double p95_ms = 0.0;      // 95th percentile over frames of the per-frame medians
     double mean_pvs = 0.0;
+    double mean_pvs_triangles = 0.0;
     double mean_exact = -1.0;  // -1 without quality
     double pvs_over_exact = 0.0;  // sum of PVS sizes / sum of exact sizes
     long long false_culls = 0;

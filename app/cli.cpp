@@ -172,6 +172,46 @@ bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, s
     return true;
 }
 
+bool parseAlgoVariants(const std::string& list, const CullerOptions& base,
+                       std::vector<AlgoVariant>& variants, std::string& error) {
+    variants.clear();
+    std::stringstream in(list);
+    std::string entry;
+    while (std::getline(in, entry, ',')) {
+        std::vector<std::string> parts;
+        std::stringstream fields(entry);
+        std::string field;
+        while (std::getline(fields, field, ':')) parts.push_back(field);
+        if (parts.empty()) parts.push_back("");
+        std::vector<std::string> names;
+        if (!splitAlgorithms(parts[0], names, error)) return false;
+        AlgoVariant variant{entry, parts[0], base};
+        std::vector<std::string> flags;
+        for (size_t i = 1; i < parts.size(); ++i) {
+            if (parts[i].find('=') == std::string::npos) {
+                error = "--algo entry '" + entry + "': expected FLAG=VALUE after ':', got '" +
+                        parts[i] + "'";
+                return false;
+            }
+            flags.push_back("--" + parts[i]);
+        }
+        std::vector<char*> argv;
+        for (std::string& f : flags) argv.push_back(f.data());
+        CliArgs args(withCullerOptionFlags({}), {});
+        if (!args.parse(int(argv.size()), argv.data(), 0) ||
+            !readCullerOptions(args, variant.options)) {
+            error = "--algo entry '" + entry + "': " + args.error();
+            return false;
+        }
+        variants.push_back(std::move(variant));
+    }
+    if (variants.empty()) {
+        error = "--algo needs at least one algorithm name";
+        return false;
+    }
+    return true;
+}
+
 bool loadSceneOrReport(const std::string& path, Scene& scene) {
     SceneLoadResult loaded = loadSceneFile(path);
     if (!loaded.scene) {

@@ -39,4 +39,16 @@ std::string describeCullerOptions(const CullerOptions& options);
 // Checks that every name in a comma-separated list is an algorithm.
 bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error);
 
+// One entry of bench's --algo list: NAME, or NAME:FLAG=VALUE[:FLAG=VALUE...] where
+// each FLAG is a culler option flag without its dashes (cell-size, lazy-prob, ...),
+// applied over the command's own options, so that one run can time the same
+// algorithm at several settings side by side. `label` is the entry as written.
+struct AlgoVariant {
+    std::string label;
+    std::string name;
+    CullerOptions options;
+};
+bool parseAlgoVariants(const std::string& list, const CullerOptions& base,
+                       std::vector<AlgoVariant>& variants, std::string& error);
+
 }  // namespace gridcull

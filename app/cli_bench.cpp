@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/cli_args.h"
 #include "app/output_file.h"
+#include "culling/object_triangles.h"
 
 namespace gridcull {
 
@@ -25,7 +26,10 @@ const char* const kBenchHelp =
     "percentile cull time per frame (each frame's median over runs), the ratio to the\n"
     "first algorithm listed, the mean PVS size, the mean exact visible count, PVS/exact,\n"
     "the false culls (ids the exact oracle sees that the PVS lacks) and the frames\n"
-    "that had any, and each algorithm's counters per frame.\n"
+    "that had any, the mean triangles of the PVS (culling/object_triangles.h), and\n"
+    "each algorithm's counters per frame.\n"
+    "An --algo entry may set culler options for itself: NAME:FLAG=VALUE[:FLAG=VALUE],\n"
+    "e.g. lazy-grid:cell-size=8,lazy-grid:cell-size=64 times two cell sizes side by side.\n"
     "Quote ratios, not milliseconds: the machine may be shared.\n"
     "\n"
     "  --algo A[,B...]    algorithms, comma-separated:";
@@ -86,14 +90,15 @@ int runBenchCommand(int argc, char** argv, int first) {
     }
     if (args.positional().size() != 1) return usageError("bench", "expected one SCENE file");
     if (!args.has("algo")) return usageError("bench", "--algo is required");
-    std::vector<std::string> algos;
     std::string error;
-    if (!splitAlgorithms(args.text("algo", ""), algos, error)) return usageError("bench", error);
     CullerOptions options;
     long long frames = -1, runs = 5;
     if (!args.integer("frames", 1, 1000000, frames) || !args.integer("runs", 1, 1000, runs) ||
         !readCullerOptions(args, options))
         return usageError("bench", args.error());
+    std::vector<AlgoVariant> algos;
+    if (!parseAlgoVariants(args.text("algo", ""), options, algos, error))
+        return usageError("bench", error);
 
     Scene scene;
     if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
@@ -104,13 +109,14 @@ int runBenchCommand(int argc, char** argv, int first) {
     std::vector<std::unique_ptr<Culler>> cullers;
     std::vector<AlgoBench> benches(algos.size());
     for (size_t i = 0; i < algos.size(); ++i) {
-        cullers.push_back(makeCuller(algos[i], options, error));
+        cullers.push_back(makeCuller(algos[i].name, algos[i].options, error));
         if (!cullers.back() || !cullers.back()->supports(scene, error)) {
-            std::cerr << "gridcull bench: " << algos[i] << ": " << error << "\n";
+            std::cerr << "gridcull bench: " << algos[i].label << ": " << error << "\n";
             return kExitFailure;
         }
         AlgoBench& b = benches[i];
-        b.algo = algos[i];
+        b.algo = algos[i].label;
+        b.pvs_triangles.assign(size_t(n_frames), 0);
         b.ms.assign(size_t(n_frames) * size_t(n_runs), 0.0);
         b.pvs_size.assign(size_t(n_frames), 0);
         b.exact_size.assign(size_t(n_frames), -1);
@@ -149,6 +155,8 @@ int runBenchCommand(int argc, char** argv, int first) {
                 b.ms[size_t(run) * size_t(n_frames) + size_t(f)] = result.stats.cull_ms;
                 if (run != 0) continue;
                 b.pvs_size[size_t(f)] = int(result.pvs.size());
+                for (int id : result.pvs)
+                    b.pvs_triangles[size_t(f)] += trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
                 b.stats[size_t(f)] = result.stats;
                 if (quality) {
                     b.exact_size[size_t(f)] = int(exact.pvs.size());
