@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# Reproduces Hey, Tobler & Purgathofer's Fig. 7-9 (triangles drawn, pixel-level
+# queries and time per frame; lazy vs busy vs no occlusion culling, two
+# resolutions) on the forest and city walkthroughs, the cell-size curve (8..64
+# pixels) and the section 6 extensions, with `gridcull bench`. Writes the tables
+# (.txt), per-frame CSVs and PNG plots to docs/results/lazy-grid/ (or $1).
+# Needs gnuplot for the plots (Debian's gnuplot-nox, installed when missing).
+# "No occlusion culling" is vfc, as in the paper ("but also with hierarchical
+# view frustum culling"). Takes about 10 minutes on one core.
+#
+# usage: scripts/lazy-grid-figures.sh [OUT_DIR] [RUNS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-docs/results/lazy-grid}
+runs=${2:-3}
+scripts/install-deps.sh
+if ! command -v gnuplot >/dev/null; then
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends gnuplot-nox
+fi
+scripts/build.sh >/dev/null
+exe=build/app/gridcull
+mkdir -p "$out"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# One column of one algorithm's rows, as "frame value" lines.
+series() {  # csv algo column-name
+    awk -F, -v algo="$2" -v name="$3" '
+        NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) col = i; next }
+        $1 == algo && col { print $2, $col }' "$1"
+}
+
+plot() {  # csv png title ylabel column algo...
+    local csv=$1 png=$2 title=$3 ylabel=$4 column=$5
+    shift 5
+    local cmd="" algo
+    for algo in "$@"; do
+        series "$csv" "$algo" "$column" >"$tmp/$algo.dat"
+        cmd+="${cmd:+, }'$tmp/$algo.dat' using 1:2 with lines lw 2 title '$algo'"
+    done
+    gnuplot <<GP
+set terminal png size 900,420 font ",11"
+set output '$png'
+set title '$title'
+set xlabel 'frame'
+set ylabel '$ylabel'
+set key outside right
+set grid
+plot $cmd
+GP
+}
+
+algos=vfc,busy-grid,lazy-grid,lazy-grid-z
+for scene in forest-walk-3d city-walk-3d; do
+    for res in 640 1280; do
+        name="$scene-$res"
+        echo "== $name: $algos at $res pixels (4:3), $runs runs"
+        "$exe" bench "scenes/$scene.json" --algo "$algos" --runs "$runs" --oracle-res "$res" \
+            --csv "$out/$name.csv" | tee "$out/$name.txt"
+        plot "$out/$name.csv" "$out/$name-triangles.png" "$scene at $res: triangles drawn (Fig. 7)" \
+            "triangles" pvs_triangles vfc busy-grid lazy-grid lazy-grid-z
+        plot "$out/$name.csv" "$out/$name-pixel-queries.png" \
+            "$scene at $res: pixel-level queries (Fig. 8)" "queries" pixel_queries busy-grid lazy-grid \
+            lazy-grid-z
+        plot "$out/$name.csv" "$out/$name-time.png" "$scene at $res: cull time (Fig. 9)" \
+            "ms (median over runs)" cull_ms_median busy-grid lazy-grid lazy-grid-z
+    done
+done
+
+# The cell-size curve, and with the probability threshold, whose accuracy depends on it.
+sizes="8 12 16 24 32 48 64"
+for scene in forest-walk-3d city-walk-3d; do
+    list=""
+    for s in $sizes; do list+="${list:+,}busy-grid:cell-size=$s,lazy-grid:cell-size=$s,lazy-grid:cell-size=$s:lazy-prob=0.5"; done
+    echo "== $scene: cell sizes $sizes at 640"
+    "$exe" bench "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" --oracle-res 640 \
+        | tee "$out/$scene-cell-size.txt"
+    # Rows: label median ... pvs/exact (7th) ... pixel_queries=Q among the counters.
+    awk '$1 ~ /cell-size=/ {
+            split($1, a, "cell-size="); split(a[2], b, ":"); kind = $1; sub(/:cell-size=[0-9]+/, "", kind)
+            q = ""; for (i = 11; i <= NF; ++i) if ($i ~ /^pixel_queries=/) { q = $i; sub(/.*=/, "", q) }
+            print kind, b[1], $2, q, $7 }' "$out/$scene-cell-size.txt" >"$tmp/cells.dat"
+    for kind in busy-grid lazy-grid lazy-grid:lazy-prob=0.5; do
+        awk -v k="$kind" '$1 == k { print $2, $3, $4, $5 }' "$tmp/cells.dat" >"$tmp/cells-$kind.dat"
+    done
+    gnuplot <<GP
+set terminal png size 900,700 font ",11"
+set output '$out/$scene-cell-size.png'
+set multiplot layout 3,1 title '$scene at 640: cell size trade (median of $runs runs)'
+set grid
+set key outside right
+set logscale x 2
+set xtics (8, 12, 16, 24, 32, 48, 64)
+set ylabel 'median ms'
+plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:2 with linespoints lw 2 title k
+set ylabel 'pixel queries'
+plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:3 with linespoints lw 2 title k
+set ylabel 'PVS / exact'
+set xlabel 'cell size (pixels)'
+plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:4 with linespoints lw 2 title k
+unset multiplot
+GP
+done
+
+# Section 6's extensions, each against the plain lazy grid in one run.
+ext="lazy-grid,lazy-grid:lazy-prob=0.25,lazy-grid:lazy-prob=0.5,lazy-grid:lazy-prob=1"
+ext+=",lazy-grid:lazy-border-whole=0.25,lazy-grid:lazy-border-whole=0.5"
+ext+=",lazy-grid:lazy-large-box=0.1,lazy-grid:lazy-large-box=0.3,busy-grid"
+for scene in forest-walk-3d city-walk-3d; do
+    echo "== $scene: section 6 extensions at 640"
+    "$exe" bench "scenes/$scene.json" --algo "$ext" --runs "$runs" --oracle-res 640 \
+        | tee "$out/$scene-extensions.txt"
+done
+echo "results in $out"
