@@ -1,6 +1,7 @@
 // `gridcull shot` (one frame of the window to a PNG) and `gridcull view` (the window).
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "app/cli.h"
 #include "app/cli_args.h"
@@ -13,6 +14,7 @@ namespace {
 const char* const kShotHelp =
     "usage: gridcull shot SCENE --frame F --out FILE.png [--view V] [--algo A]\n"
     "                     [--width W] [--height H] [--layer N] [--occluder K]\n"
+    "                     [--lazy-object ID]\n"
     "\n"
     "Renders frame F of SCENE exactly as the window shows it (culling run from frame 0,\n"
     "so temporal state is as in the window) and writes a PNG. Needs an X display: on a\n"
@@ -28,6 +30,14 @@ const char* const kShotRgvcHelp =
     "  --occluder K       rgvc, 2D: pick extended occluder K (0-based, in the order the\n"
     "                     traversal found them) and draw its extension steps and\n"
     "                     occlusion polygon (default: none)\n";
+
+const char* const kShotLazyHelp =
+    "  --lazy-object ID   lazy-grid, lazy-grid-z, busy-grid, 3D: pick object ID (its\n"
+    "                     scene id) as a click in the window does: the cells its\n"
+    "                     deciding test touched and its screen rectangle over the\n"
+    "                     view through the culling camera (--view camera or\n"
+    "                     main-camera), the step that decided it in the panel\n"
+    "                     (default: none)\n";
 
 const char* const kViewHelp =
     "usage: gridcull view SCENE [--algo A] [--frame F] [--width W] [--height H]\n"
@@ -73,15 +83,16 @@ bool checkAlgo(const ViewOptions& view, std::string& error) {
 }  // namespace
 
 int runShotCommand(int argc, char** argv, int first) {
-    CliArgs args(withCullerOptionFlags(
-                     {"frame", "out", "view", "algo", "width", "height", "layer", "occluder"}),
+    CliArgs args(withCullerOptionFlags({"frame", "out", "view", "algo", "width", "height", "layer",
+                                        "occluder", "lazy-object"}),
                  {"help"});
     if (!args.parse(argc, argv, first)) return usageError("shot", args.error());
     if (args.has("help")) {
         std::printf(
             "%s%s\n  --algo A           the algorithm that colours the objects "
-            "(default vfc)\n%s%s%s",
-            kShotHelp, viewNamesHelp(), kShotRgvcHelp, kWindowFlagsHelp, kCullerOptionsHelp);
+            "(default vfc)\n%s%s%s%s",
+            kShotHelp, viewNamesHelp(), kShotRgvcHelp, kShotLazyHelp, kWindowFlagsHelp,
+            kCullerOptionsHelp);
         return kExitOk;
     }
     if (args.positional().size() != 1) return usageError("shot", "expected one SCENE file");
@@ -92,11 +103,14 @@ int runShotCommand(int argc, char** argv, int first) {
     if (!readViewOptions(args, view)) return usageError("shot", args.error());
     if (!checkAlgo(view, error)) return usageError("shot", error);
     long long layer = view.rgvc_layer, occluder = view.rgvc_occluder;
+    long long lazy_object = view.lazy_object;
     if (!args.integer("layer", 0, 100000000, layer) ||
-        !args.integer("occluder", 0, 100000000, occluder))
+        !args.integer("occluder", 0, 100000000, occluder) ||
+        !args.integer("lazy-object", 0, std::numeric_limits<int>::max(), lazy_object))
         return usageError("shot", args.error());
     view.rgvc_layer = layer;
     view.rgvc_occluder = int(occluder);
+    view.lazy_object = int(lazy_object);
 
     Scene scene;
     if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
@@ -104,6 +118,10 @@ int runShotCommand(int argc, char** argv, int first) {
         return usageError("shot", "--frame " + std::to_string(view.frame) +
                                       " is past the scene's last frame " +
                                       std::to_string(scene.frames - 1));
+    }
+    if (view.lazy_object >= 0 && scene.indexOf(view.lazy_object) < 0) {
+        return usageError("shot", "--lazy-object " + std::to_string(view.lazy_object) +
+                                      ": the scene has no object with that id");
     }
     if (!renderShot(scene, view, args.text("out", ""), error)) {
         std::cerr << "gridcull shot: " << error << "\n";

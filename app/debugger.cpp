@@ -27,12 +27,14 @@ bool Debugger::init(const Scene& scene, std::string& error) {
     if (!session_.open(scene, scene.source_path, options_.algo, error)) return false;
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
+    if (options_.lazy_object >= 0)
+        lazy_pinned_index_ = session_.scene().indexOf(options_.lazy_object);
     session_.seek(options_.frame);
     if (options_.play) togglePlay();
     return true;
 }
 
-void Debugger::updateHover(double x, double y, bool inside, const PixelRect& view) {
+void Debugger::updateHover(double x, double y, bool inside, const WindowRect& view) {
     hovered_index_ = -1;
     hovered_distance_ = 0.0;
     voxel_hovered_ = false;
@@ -100,6 +102,10 @@ void Debugger::pickRgvcOccluder() {
     rgvc_view_.occluder = rgvcOccluderAt(*rgvc, hovered_voxel_);
 }
 
+void Debugger::pickLazyObject() {
+    if (session_.lazyGridSnapshot()) lazy_pinned_index_ = hovered_index_;
+}
+
 FrameSnapshot Debugger::snapshot() const {
     FrameSnapshot s;
     s.scene = &session_.scene();
@@ -123,6 +129,10 @@ FrameSnapshot Debugger::snapshot() const {
     s.rgvc = session_.rgvcSnapshot();
     s.rgvc_view = rgvc_view_;
     if (s.rgvc && voxel_hovered_) s.rgvc_voxel = &rgvc_voxel_;
+    s.lazy_grid = session_.lazyGridSnapshot();
+    s.lazy_view = lazy_view_;
+    s.lazy_object = lazyObject();
+    s.lazy_object_pinned = hovered_index_ < 0 && lazy_pinned_index_ >= 0;
     return s;
 }
 
@@ -152,6 +162,7 @@ void Debugger::openSceneFile(const std::string& path) {
     scene_errors_.clear();
     playing_ = false;
     hovered_index_ = -1;
+    lazy_pinned_index_ = -1;  // an id of the scene it was given for
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
 }
@@ -175,6 +186,17 @@ void Debugger::apply(const UiActions& actions) {
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
     if (actions.rgvc.view) rgvc_view_ = *actions.rgvc.view;
+    if (actions.lazy_grid.view) lazy_view_ = *actions.lazy_grid.view;
+    if (actions.lazy_grid.cell_size) {
+        CullerOptions options = session_.cullerOptions();
+        options.lazy_cell_size = *actions.lazy_grid.cell_size;
+        std::string error;
+        if (!session_.setCullerOptions(options, error)) scene_errors_ = {error};
+    }
+}
+
+bool Debugger::throughCullingCamera() const {
+    return session_.scene().dimensions == 3 && view_mode_ == ViewMode::CullingCamera;
 }
 
 void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, double scale) {
@@ -183,10 +205,9 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.t = session_.t();
     input.states = &session_.states();
     input.culling_camera = session_.cullingCamera();
-    const bool through_camera =
-        session_.scene().dimensions == 3 && view_mode_ == ViewMode::CullingCamera;
+    const bool through_camera = throughCullingCamera();
     input.show_culling_camera = !through_camera;
-    const PixelRect& v = layout.scene_view;
+    const WindowRect& v = layout.scene_view;
     input.viewport = {int(v.x * scale), int(v.y * scale), int(v.width * scale),
                       int(v.height * scale)};
     input.framebuffer_height = framebuffer_height;
@@ -195,6 +216,13 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.hovered_index = hovered_index_;
     input.rgvc = session_.rgvcSnapshot();
     input.rgvc_view = rgvc_view_;
+    // The grid is the culling camera's image, so it lies on the objects only when
+    // the view looks through that camera.
+    input.lazy_grid = through_camera ? session_.lazyGridSnapshot() : nullptr;
+    input.lazy_view = lazy_view_;
+    input.lazy_object = lazyObject();
+    // A picked object is outlined as if it were under the mouse.
+    if (session_.lazyGridSnapshot()) input.hovered_index = lazyObject();
     last_draw_ms_ = renderer_.draw(input);
     session_.recordDrawMs(last_draw_ms_);
 }

@@ -38,7 +38,7 @@ public:
 
     // Looks up the object under (x, y) in window pixels, or clears the hover when
     // the point is outside `view` or `inside` is false.
-    void updateHover(double x, double y, bool inside, const PixelRect& view);
+    void updateHover(double x, double y, bool inside, const WindowRect& view);
     // Advances playback by `seconds` of wall time: one scene frame per scene dt,
     // at most a few frames per call so slow culling cannot snowball.
     void advancePlayback(double seconds);
@@ -50,6 +50,9 @@ public:
     // rgvc, 2D: picks the extended occluder at the voxel under the mouse (none
     // when no occluder starts at or covers it).
     void pickRgvcOccluder();
+    // Lazy grid, 3D: keeps the object under the mouse (none: clears) as the one
+    // the lazy overlay and panel detail while the mouse is elsewhere.
+    void pickLazyObject();
 
     // The panels; returns the user's actions (apply them after the frame).
     UiActions drawUi(const WindowLayout& layout);
@@ -63,6 +66,10 @@ public:
 private:
     FrameSnapshot snapshot() const;
     void openSceneFile(const std::string& path);
+    // The object (index) the lazy grid's overlay and panel detail: the one under
+    // the mouse, else the picked one (a click, or options.lazy_object).
+    int lazyObject() const { return hovered_index_ >= 0 ? hovered_index_ : lazy_pinned_index_; }
+    bool throughCullingCamera() const;
 
     ViewOptions options_;
     DebuggerSession session_;
@@ -84,6 +91,9 @@ private:
     bool voxel_hovered_ = false;
     glm::ivec2 hovered_voxel_{0};
     RgvcVoxelInfo rgvc_voxel_;
+    // Lazy grid (3D): what the overlay shows, and the picked object's index.
+    LazyGridViewState lazy_view_;
+    int lazy_pinned_index_ = -1;
 };
 
 }  // namespace gridcull

@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "app/object_states.h"
+#include "culling/lazy_grid_culler.h"
 #include "culling/rgvc_culler.h"
 
 namespace gridcull {
@@ -17,8 +18,10 @@ bool makeCullers(const std::string& algo, const CullerOptions& options,
                  std::string& error) {
     culler = makeCuller(algo, options, error);
     if (!culler) return false;
-    // The window draws rgvc's matrices and traversal; only it pays for them.
+    // The window draws rgvc's matrices and traversal and the lazy grid's cells and
+    // tests; only those cullers pay for their snapshots.
     if (auto* rgvc = dynamic_cast<RgvcCuller*>(culler.get())) rgvc->setSnapshotEnabled(true);
+    if (auto* lazy = dynamic_cast<LazyGridCuller*>(culler.get())) lazy->setSnapshotEnabled(true);
     exact.reset();
     if (algo != kOracleName) {
         exact = makeCuller(kOracleName, options, error);
@@ -50,6 +53,19 @@ bool DebuggerSession::selectAlgorithm(const std::string& algo, std::string& erro
     std::unique_ptr<Culler> culler, exact;
     if (!makeCullers(algo, options_, culler, exact, error)) return false;
     algo_ = algo;
+    culler_ = std::move(culler);
+    exact_ = std::move(exact);
+    const int target = frame_;
+    restart();
+    seek(target);
+    return true;
+}
+
+bool DebuggerSession::setCullerOptions(const CullerOptions& options, std::string& error) {
+    assert(isOpen());
+    std::unique_ptr<Culler> culler, exact;
+    if (!makeCullers(algo_, options, culler, exact, error)) return false;
+    options_ = options;
     culler_ = std::move(culler);
     exact_ = std::move(exact);
     const int target = frame_;
@@ -96,6 +112,13 @@ const RgvcSnapshot* DebuggerSession::rgvcSnapshot() const {
     const auto* rgvc = dynamic_cast<const RgvcCuller*>(culler_.get());
     if (!rgvc || !rgvc->snapshot().valid) return nullptr;
     return &rgvc->snapshot();
+}
+
+const LazyGridSnapshot* DebuggerSession::lazyGridSnapshot() const {
+    if (!scene_ || scene_->dimensions != 3) return nullptr;
+    const auto* lazy = dynamic_cast<const LazyGridCuller*>(culler_.get());
+    if (!lazy || !lazy->snapshot().valid) return nullptr;
+    return &lazy->snapshot();
 }
 
 void DebuggerSession::recordDrawMs(double ms) {

@@ -12,6 +12,7 @@
 
 #include "culling/camera.h"
 #include "culling/culler.h"
+#include "culling/lazy_grid_snapshot.h"
 #include "culling/rgvc_snapshot.h"
 #include "culling/scene.h"
 #include "ui/frame_snapshot.h"
@@ -31,6 +32,11 @@ public:
     // Switches the culler and re-runs frames 0..frame(). False and `error` for an
     // unknown name (the current culler stays).
     bool selectAlgorithm(const std::string& algo, std::string& error);
+    // Re-creates both cullers with `options` (say another lazy grid cell size) and
+    // re-runs frames 0..frame(). False and `error` when a culler cannot be made
+    // (the current ones and options stay).
+    bool setCullerOptions(const CullerOptions& options, std::string& error);
+    const CullerOptions& cullerOptions() const { return options_; }
 
     // Shows `frame`, clamped to the scene's frames.
     void seek(int frame);
@@ -63,6 +69,10 @@ public:
     // 2D (its snapshot is switched on for that), else null. Valid until the next
     // frame is culled.
     const RgvcSnapshot* rgvcSnapshot() const;
+    // The lazy occlusion grid's last frame when lazy-grid, lazy-grid-z or
+    // busy-grid is the selected culler and the scene is 3D (its snapshot is
+    // switched on for that), else null. Valid until the next frame is culled.
+    const LazyGridSnapshot* lazyGridSnapshot() const;
 
 private:
     void restart();          // reset both cullers, run frame 0

@@ -97,7 +97,9 @@ bool Renderer::init(std::string& error) {
     view_projection_location_ = glGetUniformLocation(program_.get(), "u_view_projection");
     eye_location_ = glGetUniformLocation(program_.get(), "u_eye");
     flat_location_ = glGetUniformLocation(program_.get(), "u_flat");
-    if (!line_renderer_.init(error) || !rgvc_overlay_.init(error)) return false;
+    if (!line_renderer_.init(error) || !rgvc_overlay_.init(error) ||
+        !lazy_grid_overlay_.init(error))
+        return false;
 
     std::vector<ShadedVertex> vertices, lod_vertices;
     std::vector<uint32_t> indices, lod_indices;
@@ -317,7 +319,7 @@ void Renderer::drawObjects(const SceneDrawInput& input) {
 
 double Renderer::draw(const SceneDrawInput& input) {
     const auto start = std::chrono::steady_clock::now();
-    const PixelRect& r = input.viewport;
+    const WindowRect& r = input.viewport;
     const GLint gl_y = input.framebuffer_height - (r.y + r.height);
     glViewport(r.x, gl_y, r.width, r.height);
     glEnable(GL_SCISSOR_TEST);
@@ -331,6 +333,13 @@ double Renderer::draw(const SceneDrawInput& input) {
     drawObjects(input);
     if (input.rgvc && dimensions_ == 2)
         rgvc_overlay_.draw(*input.rgvc, input.rgvc_view, glm::mat4(input.view.view_projection));
+    if (input.lazy_grid && dimensions_ == 3) {
+        // Under the outlines of false culls, which must stay findable.
+        const LazyGridSnapshot& lazy = *input.lazy_grid;
+        const ImageFrame frame = cullingImageFrame(input.culling_camera.aspect, r.width, r.height,
+                                                   lazy.width, lazy.height);
+        lazy_grid_overlay_.draw(lazy, input.lazy_view, input.lazy_object, frame, r.width, r.height);
+    }
     drawOverlays(input, false);
 
     glDisable(GL_SCISSOR_TEST);

@@ -10,6 +10,8 @@
 // polygons triangulated by ear clipping once per scene; flat colours, with the
 // states layered in depth so a false cull is never hidden under a culled shape.
 // 2D with rgvc: its matrices and traversal over the objects (app/rgvc_overlay.h).
+// 3D through the culling camera with a lazy grid culler: its cells over the
+// objects (app/lazy_grid_overlay.h).
 //
 // All buffers are sized on setScene() and reused: a steady state allocates
 // nothing per frame. Needs a current GL 3.3 core context for every call.
@@ -21,6 +23,7 @@
 #include <glm/vec4.hpp>
 
 #include "app/gl_objects.h"
+#include "app/lazy_grid_overlay.h"
 #include "app/line_renderer.h"
 #include "app/rgvc_overlay.h"
 #include "app/view_camera.h"
@@ -38,12 +41,18 @@ struct SceneDrawInput {
     Camera culling_camera;
     bool show_culling_camera = true;  // off when looking through it
     ViewMatrices view;
-    PixelRect viewport;               // window pixels, origin top left
+    WindowRect viewport;              // window pixels, origin top left
     int framebuffer_height = 0;       // to flip the viewport into GL's bottom-left origin
     int hovered_index = -1;           // outlined when >= 0
     // 2D rgvc: the culler's state drawn over the objects (null: nothing).
     const RgvcSnapshot* rgvc = nullptr;
     RgvcViewState rgvc_view;
+    // 3D, looking through the culling camera with lazy-grid, lazy-grid-z or
+    // busy-grid: its grid over the objects (null: nothing), what of it to show,
+    // and the object (index) whose deciding test it details (-1: none).
+    const LazyGridSnapshot* lazy_grid = nullptr;
+    LazyGridViewState lazy_view;
+    int lazy_object = -1;
 };
 
 class Renderer {
@@ -106,6 +115,7 @@ private:
     std::vector<ColorVertex> highlight_;
     LineRenderer line_renderer_;
     RgvcOverlay rgvc_overlay_;
+    LazyGridOverlay lazy_grid_overlay_;
 };
 
 }  // namespace gridcull

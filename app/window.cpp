@@ -33,9 +33,9 @@ const float kClear[4] = {0.10f, 0.11f, 0.13f, 1.0f};
 // What a `--view` name draws: panels or not, and from which camera.
 bool parseView(const std::string& view, bool& panels, ViewMode& mode) {
     mode = ViewMode::Overview;
-    panels = view == "main";
+    panels = view == "main" || view == "main-camera";
     if (view == "main" || view == "scene") return true;
-    if (view == "camera") {
+    if (view == "camera" || view == "main-camera") {
         mode = ViewMode::CullingCamera;
         return true;
     }
@@ -53,8 +53,10 @@ void printDrawSummary(std::vector<double>& draw_ms) {
 }  // namespace
 
 const char* viewNamesHelp() {
-    return "main (the window: view and panels), scene (the view alone) or\n"
-           "                     camera (3D: through the culling camera, no panels); default main";
+    return "main (the window: view and panels), scene (the view alone),\n"
+           "                     camera (3D: through the culling camera, no panels) or\n"
+           "                     main-camera (the window, its view through the culling\n"
+           "                     camera); default main";
 }
 
 int runWindow(const Scene& scene, const ViewOptions& options) {

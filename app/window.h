@@ -20,6 +20,9 @@ struct ViewOptions {
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
     int64_t rgvc_layer = -1;    // rgvc, 2D: traversal shown up to this chess layer (-1: all)
     int rgvc_occluder = -1;     // rgvc, 2D: the picked extended occluder (-1: none)
+    // lazy / busy grid, 3D: the object (scene id) whose deciding test the overlay
+    // and panel show when nothing is under the mouse (-1: none).
+    int lazy_object = -1;
 };
 
 // The names `shot --view` accepts ("main": the whole window with its panels, ...).

@@ -9,7 +9,7 @@ namespace gridcull {
 
 void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayout& layout) {
     const ImGuiIO& io = ImGui::GetIO();
-    const PixelRect& view = layout.scene_view;
+    const WindowRect& view = layout.scene_view;
     const bool mouse_free = !io.WantCaptureMouse;
     const bool over_view = mouse_free && view.contains(io.MousePos.x, io.MousePos.y);
     const bool dimensions3 = debugger.session().scene().dimensions == 3;
@@ -27,8 +27,12 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
             camera.orbit(dx, dy);
     }
     if (over_view && io.MouseWheel != 0.0f) camera.zoom(io.MouseWheel);
-    if (over_view && !dimensions3 && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-        debugger.pickRgvcOccluder();
+    if (over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        if (dimensions3)
+            debugger.pickLazyObject();
+        else
+            debugger.pickRgvcOccluder();
+    }
 
     if (io.WantCaptureKeyboard) return;
     if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) debugger.togglePlay();

@@ -225,7 +225,8 @@ bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
         bool part_free;
         if (extensions_.border_whole_fraction > 0.0 && cell.state == CellState::Outdated &&
             double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
-            // Section 6: query the whole cell; the same pass answers the part.
+            // Section 6: query the whole cell (one query, counted once); the part,
+            // a subset of the pixels just read, is answered from the same words.
             updateCell(index);
             part_free = !cell.full && obuffer_->countFree(part) > 0;
         } else {

@@ -16,7 +16,7 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
            snapshot.scene_errors);
     UiActions actions;
 
-    const PixelRect& column = layout.panels;
+    const WindowRect& column = layout.panels;
     ImGui::SetNextWindowPos(ImVec2(float(column.x), float(column.y)), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(float(column.width), float(column.height)), ImGuiCond_Always);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -28,8 +28,10 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
         actions.scene = drawScenePanel(snapshot, state.scene);
         actions.playback = drawPlaybackPanel(snapshot);
         actions.algorithm = drawAlgorithmPanel(snapshot);
-        // rgvc's own view right under the culler that fills it (nothing otherwise).
+        // rgvc's and the lazy grid's own views right under the culler that fills
+        // them (nothing otherwise).
         actions.rgvc = drawRgvcPanel(snapshot);
+        actions.lazy_grid = drawLazyGridPanel(snapshot, state.lazy_grid);
         drawStatsPanel(snapshot, state.stats);
         drawHoverPanel(snapshot);
         drawLegendPanel(snapshot);

@@ -6,6 +6,7 @@
 #include "ui/algorithm_panel.h"
 #include "ui/frame_snapshot.h"
 #include "ui/layout.h"
+#include "ui/lazy_grid_panel.h"
 #include "ui/playback_panel.h"
 #include "ui/rgvc_panel.h"
 #include "ui/scene_panel.h"
@@ -17,6 +18,7 @@ namespace gridcull {
 struct UiState {
     StatsPanelState stats;
     ScenePanelState scene;
+    LazyGridPanelState lazy_grid;
 };
 
 struct UiActions {
@@ -24,6 +26,7 @@ struct UiActions {
     AlgorithmAction algorithm;
     SceneAction scene;
     RgvcAction rgvc;
+    LazyGridAction lazy_grid;
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the

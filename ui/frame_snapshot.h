@@ -8,6 +8,7 @@
 #include "culling/culler.h"
 #include "culling/scene.h"
 #include "grid/aabb.h"
+#include "ui/lazy_grid_view.h"
 #include "ui/object_state.h"
 #include "ui/rgvc_view.h"
 
@@ -72,6 +73,16 @@ struct FrameSnapshot {
     const RgvcSnapshot* rgvc = nullptr;
     RgvcViewState rgvc_view;
     const RgvcVoxelInfo* rgvc_voxel = nullptr;
+
+    // lazy-grid, lazy-grid-z or busy-grid in a 3D scene: the culler's last frame
+    // (null otherwise), what the overlay shows of it, and the object (index into
+    // scene->objects, -1: none) whose deciding test the panel details: the one
+    // under the mouse, else the one picked by a click or `shot --lazy-object`
+    // (`pinned`).
+    const LazyGridSnapshot* lazy_grid = nullptr;
+    LazyGridViewState lazy_view;
+    int lazy_object = -1;
+    bool lazy_object_pinned = false;
 };
 
 }  // namespace gridcull

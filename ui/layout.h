@@ -5,7 +5,9 @@
 
 namespace gridcull {
 
-struct PixelRect {
+// Window pixels (x, y, size); not culling's PixelRect, which is an inclusive
+// rectangle of an image's pixels (culling/lazy_grid_screen.h).
+struct WindowRect {
     int x = 0, y = 0, width = 0, height = 0;
     bool contains(double px, double py) const {
         return px >= x && py >= y && px < x + width && py < y + height;
@@ -13,8 +15,8 @@ struct PixelRect {
 };
 
 struct WindowLayout {
-    PixelRect scene_view;  // the 3D / 2D view
-    PixelRect panels;      // the column of panels; width 0 when there are none
+    WindowRect scene_view;  // the 3D / 2D view
+    WindowRect panels;      // the column of panels; width 0 when there are none
 };
 
 // Panel column width in pixels at window widths >= 2x this; narrower windows give
