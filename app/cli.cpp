@@ -60,7 +60,7 @@ std::string cullerOptionsHelpText() {
                   "                     (default 0.5; shorter: fewer revealed TBVs, more updates)\n"
                   "  --grid-res N       rgvc: voxels along the world's longest axis, 1..%d\n"
                   "                     (default: the scene's grid.resolution)\n"
-                  "  --lazy-res N       lazy-grid, lazy-grid-z, busy-grid: pixels on the long\n"
+                  "  --lazy-res N       lazy-grid, lazy-grid-z, busy-grid(-tight): pixels on the long\n"
                   "                     side of the software buffers, %d..%d (default: the\n"
                   "                     --oracle-res value, so false culls compare like with like)\n"
                   "  --cell-size N      lazy / busy grid: cell side in pixels, 1..%d (default 32;\n"

@@ -32,8 +32,8 @@ const char* const kShotRgvcHelp =
     "                     occlusion polygon (default: none)\n";
 
 const char* const kShotLazyHelp =
-    "  --lazy-object ID   lazy-grid, lazy-grid-z, busy-grid, 3D: pick object ID (its\n"
-    "                     scene id) as a click in the window does: the cells its\n"
+    "  --lazy-object ID   the lazy / busy grids, 3D: pick object ID (its scene\n"
+    "                     id) as a click in the window does: the cells its\n"
     "                     deciding test touched and its screen rectangle over the\n"
     "                     view through the culling camera (--view camera or\n"
     "                     main-camera), the step that decided it in the panel\n"

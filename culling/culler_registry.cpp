@@ -11,7 +11,7 @@
 namespace gridcull {
 
 std::vector<std::string> cullerNames() {
-    return {"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z", "busy-grid"};
+    return {"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"};
 }
 
 std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& options,
@@ -29,6 +29,9 @@ std::unique_ptr<Culler> makeCuller(std::string_view name, const CullerOptions& o
     if (name == "busy-grid")
         return std::make_unique<LazyGridCuller>(LazyGridVariant::OcclusionBuffer,
                                                 LazyGridUpdate::Busy, options);
+    if (name == "busy-grid-tight")
+        return std::make_unique<LazyGridCuller>(LazyGridVariant::OcclusionBuffer,
+                                                LazyGridUpdate::BusyTight, options);
     std::string known;
     for (const std::string& n : cullerNames()) known += (known.empty() ? "" : ", ") + n;
     error = "unknown algorithm '" + std::string(name) + "', expected one of: " + known;

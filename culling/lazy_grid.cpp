@@ -124,23 +124,40 @@ void LazyOcclusionGrid::updateCell(int index) {
     }
 }
 
-void LazyOcclusionGrid::afterDraw(const PixelRect& written) {
+void LazyOcclusionGrid::afterDraw(const PixelRect& written, const PixelRect& image_area) {
     const PixelRect r = written.intersect({0, 0, width_ - 1, height_ - 1});
-    if (r.empty()) return;
-    const PixelRect cells = cellsOf(r);
-    for (int cy = cells.y0; cy <= cells.y1; ++cy)
-        for (int cx = cells.x0; cx <= cells.x1; ++cx) {
-            const int index = cy * cells_x_ + cx;
-            LazyGridCell& cell = cells_[size_t(index)];
-            cell.drawn_area += double(r.intersect(cellRect(cx, cy)).area());
-            if (update_ == LazyGridUpdate::Busy) {
-                if (!cell.full) updateCell(index);
-            } else if (variant_ == LazyGridVariant::ZBuffer) {
-                cell.outdated = true;
-            } else if (!cell.full) {
-                cell.state = CellState::Outdated;
+    if (!r.empty()) {
+        const PixelRect cells = cellsOf(r);
+        for (int cy = cells.y0; cy <= cells.y1; ++cy)
+            for (int cx = cells.x0; cx <= cells.x1; ++cx) {
+                const int index = cy * cells_x_ + cx;
+                LazyGridCell& cell = cells_[size_t(index)];
+                cell.drawn_area += double(r.intersect(cellRect(cx, cy)).area());
+                if (update_ == LazyGridUpdate::BusyTight) {
+                    if (!cell.full) updateCell(index);
+                } else if (update_ == LazyGridUpdate::Busy) {
+                    // below, over the whole image area
+                } else if (variant_ == LazyGridVariant::ZBuffer) {
+                    cell.outdated = true;
+                } else if (!cell.full) {
+                    cell.state = CellState::Outdated;
+                }
             }
-        }
+    }
+    if (update_ != LazyGridUpdate::Busy) return;
+    // The image area, grown to the written pixels (a camera inside an object
+    // writes the whole image while its box's rectangle may be smaller).
+    PixelRect area = image_area;
+    if (area.empty()) {
+        area = r;
+    } else if (!r.empty()) {
+        area = {std::min(area.x0, r.x0), std::min(area.y0, r.y0), std::max(area.x1, r.x1),
+                std::max(area.y1, r.y1)};
+    }
+    if (area.empty()) return;
+    const PixelRect cells = cellsOf(area);
+    for (int cy = cells.y0; cy <= cells.y1; ++cy)
+        for (int cx = cells.x0; cx <= cells.x1; ++cx) updateCell(cy * cells_x_ + cx);
 }
 
 bool LazyOcclusionGrid::isOccluded(const BoxOnScreen& box, OcclusionStep& step,

@@ -64,7 +64,12 @@ class OcclusionBuffer;
 class OracleIdBuffer;
 
 enum class LazyGridVariant : uint8_t { OcclusionBuffer, ZBuffer };
-enum class LazyGridUpdate : uint8_t { Lazy, Busy };
+// Lazy: section 3's lazy update. Busy: section 7's busy update as the paper
+// states it, "everytime after an object has been drawn the occlusion states of all
+// cells in its image area are being updated" (its box's rectangle, full cells
+// included). BusyTight: a stronger busy baseline of ours, which updates only the
+// cells under the pixels the draw wrote and skips cells already full.
+enum class LazyGridUpdate : uint8_t { Lazy, Busy, BusyTight };
 
 // Occlusion-buffer variant states; `full` is a separate flag that overrides them.
 enum class CellState : uint8_t { CompletelyFree, PartiallyFree, Outdated };
@@ -133,9 +138,11 @@ public:
     // appended to it. Returns true when the box is occluded.
     bool isOccluded(const BoxOnScreen& box, OcclusionStep& step, std::vector<CellTouch>* trace);
 
-    // After an object was drawn into the buffers over `written` pixels: lazy
-    // update marks the cells there outdated; busy update queries each at once.
-    void afterDraw(const PixelRect& written);
+    // After an object was drawn into the buffers over `written` pixels, with
+    // `image_area` its box's rectangle: lazy update marks the cells under `written`
+    // outdated; busy update queries every cell under `image_area` and `written` at
+    // once; tight busy update queries the cells under `written` that are not full.
+    void afterDraw(const PixelRect& written, const PixelRect& image_area);
 
     int cellsX() const { return cells_x_; }
     int cellsY() const { return cells_y_; }

@@ -12,11 +12,12 @@ namespace gridcull {
 LazyGridCuller::LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update,
                                const CullerOptions& options)
     : variant_(variant), update_(update), options_(options) {
-    assert(!(variant == LazyGridVariant::ZBuffer && update == LazyGridUpdate::Busy));
+    assert(variant == LazyGridVariant::OcclusionBuffer || update == LazyGridUpdate::Lazy);
 }
 
 const char* LazyGridCuller::name() const {
     if (update_ == LazyGridUpdate::Busy) return "busy-grid";
+    if (update_ == LazyGridUpdate::BusyTight) return "busy-grid-tight";
     return variant_ == LazyGridVariant::ZBuffer ? "lazy-grid-z" : "lazy-grid";
 }
 
@@ -153,9 +154,9 @@ bool LazyGridCuller::testNode(const ListEntry& entry) {
     return occluded;
 }
 
-void LazyGridCuller::drawLeaf(const Scene& scene, int32_t node, double zfar, double t,
+void LazyGridCuller::drawLeaf(const Scene& scene, const ListEntry& entry, double t,
                               FrameResult& out) {
-    const BvhNode& leaf = bvh_.nodes()[size_t(node)];
+    const BvhNode& leaf = bvh_.nodes()[size_t(entry.node)];
     for (int32_t k = leaf.first; k < leaf.first + leaf.count; ++k) {
         const int index = bvh_.objectOrder()[size_t(k)];
         const SceneObject& object = scene.objects[size_t(index)];
@@ -179,11 +180,12 @@ void LazyGridCuller::drawLeaf(const Scene& scene, int32_t node, double zfar, dou
             const ScreenRange cols = zbuffer_.lastDrawCols(), rows = zbuffer_.lastDrawRows();
             written = {cols.lo, rows.lo, cols.hi, rows.hi};
             if (variant_ == LazyGridVariant::OcclusionBuffer) obuffer_.markDrawn(zbuffer_, written);
-            grid_.afterDraw(written);
+            grid_.afterDraw(written, entry.box.rect);
         }
         out.pvs.push_back(object.id);
         triangles_drawn_ += trianglesOf(object);
-        if (snapshot_enabled_) snapshot_.events.push_back({LazyGridEvent::Draw, index, zfar, written});
+        if (snapshot_enabled_)
+            snapshot_.events.push_back({LazyGridEvent::Draw, index, entry.box.zfar, written});
     }
 }
 
@@ -196,7 +198,7 @@ void LazyGridCuller::traverseFig4(const Scene& scene, const Camera& camera, doub
         if (testNode(entry)) continue;
         const BvhNode& node = bvh_.nodes()[size_t(entry.node)];
         if (node.isLeaf()) {
-            drawLeaf(scene, entry.node, entry.box.zfar, t, out);
+            drawLeaf(scene, entry, t, out);
         } else {
             offerToTestList(node.left, camera);
             offerToTestList(node.right, camera);
@@ -213,7 +215,7 @@ void LazyGridCuller::traverseFig6(const Scene& scene, const Camera& camera, doub
             std::pop_heap(draw_list_.begin(), draw_list_.end(), later);
             const ListEntry entry = draw_list_.back();
             draw_list_.pop_back();
-            drawLeaf(scene, entry.node, entry.key, t, out);
+            drawLeaf(scene, entry, t, out);
             continue;
         }
         std::pop_heap(test_list_.begin(), test_list_.end(), later);

@@ -1,4 +1,4 @@
-// `lazy-grid`, `lazy-grid-z`, `busy-grid`: occlusion culling with the lazy
+// `lazy-grid`, `lazy-grid-z`, `busy-grid`, `busy-grid-tight`: occlusion culling with the lazy
 // occlusion grid of H. Hey, R. F. Tobler, W. Purgathofer, "Real-time occlusion
 // culling with a lazy occlusion grid" (2001), 3D scenes only.
 //
@@ -14,8 +14,11 @@
 //   rated potentially visible ordered by zfar; the frontmost leaf is drawn only
 //   when its zfar is smaller than every znear in the test-list, so every object
 //   drawn is wholly in front of every box tested afterwards (ties are tested
-//   first). busy-grid updates every cell under a drawn object at once (section 7's
-//   "busy update"); lazy-grid marks them outdated.
+//   first). busy-grid updates every cell of a drawn object's image area at once
+//   (section 7's "busy update", full cells included, as stated there);
+//   busy-grid-tight, a stronger baseline of ours, only the cells under the pixels
+//   it wrote that are not full; lazy-grid marks the cells under those pixels
+//   outdated.
 // The lists are binary heaps (the paper allows heaps; its lists were short).
 //
 // "Drawing" an object rasterizes it into the software z-buffer, which is the
@@ -94,7 +97,7 @@ private:
     void offerToTestList(int32_t node, const Camera& camera);
     // Runs isOccluded on a node taken from the test-list, recording it.
     bool testNode(const ListEntry& entry);
-    void drawLeaf(const Scene& scene, int32_t node, double zfar, double t, FrameResult& out);
+    void drawLeaf(const Scene& scene, const ListEntry& leaf, double t, FrameResult& out);
     void recordFrustumCull(int32_t node);
     void fillSnapshot();
 
@@ -109,7 +112,6 @@ private:
     std::vector<ListEntry> test_list_, draw_list_;
     int64_t triangles_drawn_ = 0;
     int64_t nodes_visited_ = 0;
-    int rebuilds_at_frame_start_ = 0;
     bool snapshot_enabled_ = false;
     LazyGridSnapshot snapshot_;
 };

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
+#include <limits>
 
 #include "culling/exact_oracle_id_buffer.h"
 
@@ -32,11 +32,21 @@ void OcclusionBuffer::clear() { std::fill(bits_.begin(), bits_.end(), 0); }
 void OcclusionBuffer::markDrawn(const OracleIdBuffer& zbuffer, const PixelRect& rect) {
     assert(zbuffer.width() == width_ && zbuffer.height() == height_);
     const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
+    if (r.empty()) return;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
     for (int py = r.y0; py <= r.y1; ++py) {
         const double* depth = zbuffer.depthRow(py);
         uint64_t* row = bits_.data() + size_t(py) * words_per_row_;
-        for (int px = r.x0; px <= r.x1; ++px)
-            if (std::isfinite(depth[px])) row[px >> 6] |= uint64_t(1) << (px & 63);
+        // A word at a time, each written once; words already wholly occluded (most,
+        // once the near objects are drawn) are skipped without reading depths.
+        for (int w = r.x0 >> 6; w <= r.x1 >> 6; ++w) {
+            const int lo = std::max(r.x0, w * 64), hi = std::min(r.x1, w * 64 + 63);
+            const uint64_t span = bitRange(lo & 63, hi & 63);
+            if ((row[w] & span) == span) continue;
+            uint64_t word = 0;
+            for (int px = lo; px <= hi; ++px) word |= uint64_t(depth[px] < kInf) << (px & 63);
+            row[w] |= word;
+        }
     }
 }
 

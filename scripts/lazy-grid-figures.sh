@@ -53,7 +53,7 @@ plot $cmd
 GP
 }
 
-algos=vfc,busy-grid,lazy-grid,lazy-grid-z
+algos=vfc,busy-grid,busy-grid-tight,lazy-grid,lazy-grid-z
 for scene in forest-walk-3d city-walk-3d; do
     for res in 640 1280; do
         name="$scene-$res"
@@ -63,10 +63,10 @@ for scene in forest-walk-3d city-walk-3d; do
         plot "$out/$name.csv" "$out/$name-triangles.png" "$scene at $res: triangles drawn (Fig. 7)" \
             "triangles" pvs_triangles vfc busy-grid lazy-grid lazy-grid-z
         plot "$out/$name.csv" "$out/$name-pixel-queries.png" \
-            "$scene at $res: pixel-level queries (Fig. 8)" "queries" pixel_queries busy-grid lazy-grid \
-            lazy-grid-z
+            "$scene at $res: pixel-level queries (Fig. 8)" "queries" pixel_queries busy-grid \
+            busy-grid-tight lazy-grid lazy-grid-z
         plot "$out/$name.csv" "$out/$name-time.png" "$scene at $res: cull time (Fig. 9)" \
-            "ms (median over runs)" cull_ms_median busy-grid lazy-grid lazy-grid-z
+            "ms (median over runs)" cull_ms_median busy-grid busy-grid-tight lazy-grid lazy-grid-z
     done
 done
 
@@ -74,7 +74,10 @@ done
 sizes="8 12 16 24 32 48 64"
 for scene in forest-walk-3d city-walk-3d; do
     list=""
-    for s in $sizes; do list+="${list:+,}busy-grid:cell-size=$s,lazy-grid:cell-size=$s,lazy-grid:cell-size=$s:lazy-prob=0.5"; done
+    for s in $sizes; do
+        list+="${list:+,}busy-grid:cell-size=$s,busy-grid-tight:cell-size=$s,lazy-grid:cell-size=$s"
+        list+=",lazy-grid:cell-size=$s:lazy-prob=0.5"
+    done
     echo "== $scene: cell sizes $sizes at 640"
     "$exe" bench "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" --oracle-res 640 \
         | tee "$out/$scene-cell-size.txt"
@@ -83,7 +86,7 @@ for scene in forest-walk-3d city-walk-3d; do
             split($1, a, "cell-size="); split(a[2], b, ":"); kind = $1; sub(/:cell-size=[0-9]+/, "", kind)
             q = ""; for (i = 11; i <= NF; ++i) if ($i ~ /^pixel_queries=/) { q = $i; sub(/.*=/, "", q) }
             print kind, b[1], $2, q, $7 }' "$out/$scene-cell-size.txt" >"$tmp/cells.dat"
-    for kind in busy-grid lazy-grid lazy-grid:lazy-prob=0.5; do
+    for kind in busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5; do
         awk -v k="$kind" '$1 == k { print $2, $3, $4, $5 }' "$tmp/cells.dat" >"$tmp/cells-$kind.dat"
     done
     gnuplot <<GP
@@ -94,13 +97,14 @@ set grid
 set key outside right
 set logscale x 2
 set xtics (8, 12, 16, 24, 32, 48, 64)
+set xrange [7:72]
 set ylabel 'median ms'
-plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:2 with linespoints lw 2 title k
+plot for [k in "busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:2 with linespoints lw 2 title k
 set ylabel 'pixel queries'
-plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:3 with linespoints lw 2 title k
+plot for [k in "busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:3 with linespoints lw 2 title k
 set ylabel 'PVS / exact'
 set xlabel 'cell size (pixels)'
-plot for [k in "busy-grid lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:4 with linespoints lw 2 title k
+plot for [k in "busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5"] '$tmp/cells-'.k.'.dat' using 1:4 with linespoints lw 2 title k
 unset multiplot
 GP
 done
@@ -108,7 +112,7 @@ done
 # Section 6's extensions, each against the plain lazy grid in one run.
 ext="lazy-grid,lazy-grid:lazy-prob=0.25,lazy-grid:lazy-prob=0.5,lazy-grid:lazy-prob=1"
 ext+=",lazy-grid:lazy-border-whole=0.25,lazy-grid:lazy-border-whole=0.5"
-ext+=",lazy-grid:lazy-large-box=0.1,lazy-grid:lazy-large-box=0.3,busy-grid"
+ext+=",lazy-grid:lazy-large-box=0.1,lazy-grid:lazy-large-box=0.3,busy-grid,busy-grid-tight"
 for scene in forest-walk-3d city-walk-3d; do
     echo "== $scene: section 6 extensions at 640"
     "$exe" bench "scenes/$scene.json" --algo "$ext" --runs "$runs" --oracle-res 640 \

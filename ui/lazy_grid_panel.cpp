@@ -27,6 +27,8 @@ void swatch(const char* id, Rgb c, float alpha) {
 const char* variantText(const LazyGridSnapshot& lazy) {
     if (lazy.variant == LazyGridVariant::ZBuffer)
         return "z-buffer variant, lazy update (3.2, Fig. 4)";
+    if (lazy.update == LazyGridUpdate::BusyTight)
+        return "occlusion buffer, tight busy update (Fig. 6)";
     return lazy.update == LazyGridUpdate::Busy ? "occlusion buffer, busy update (7, Fig. 6)"
                                                : "occlusion buffer, lazy update (3.1, Fig. 6)";
 }

@@ -39,7 +39,7 @@ TEST(CounterNames, AreTheSpecNamesInSnakeCase) {
 TEST(CullerRegistry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = cullerNames();
     EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
-                                              "lazy-grid-z", "busy-grid"}));
+                                              "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, CullerOptions{}, error);

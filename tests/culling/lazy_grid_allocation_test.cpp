@@ -50,7 +50,7 @@ TEST(LazyGridAllocation, SteadyFramesAllocateNothing) {
         const Scene scene = test::lazyGridRandomScene(seed);
         CullerOptions options;
         options.oracle_resolution = 320;
-        for (const char* name : {"lazy-grid", "lazy-grid-z", "busy-grid"}) {
+        for (const char* name : {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"}) {
             auto culler = test::makeOrDie(name, options);
             culler->reset(scene);
             FrameResult result;

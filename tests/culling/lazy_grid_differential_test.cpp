@@ -67,7 +67,7 @@ void runScene(const Scene& scene, const CullerOptions& options,
 }
 
 void sweep(const CullerOptions& options, const char* label) {
-    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid"};
+    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
     for (uint64_t seed : test::seedsToRun(1, kScenes)) {
         test::withSeed(seed, [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
@@ -101,7 +101,7 @@ TEST(LazyGridDifferential, NoFalseCullsWithSmallCellsAndEverySectionSixExtension
 TEST(LazyGridDifferential, NoFalseCullsAtTheOracleDefaultResolutionOnFewerScenes) {
     // 1024 pixels on the long side, the window's setting: a few scenes only.
     CullerOptions options;
-    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid"};
+    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
     for (uint64_t seed : test::seedsToRun(10001, 12)) {
         test::withSeed(seed, [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });

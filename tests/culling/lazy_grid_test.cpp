@@ -86,7 +86,7 @@ TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
 
     // Something drawn over all of cell 0 and part of cell 1.
     buffer.markOccluded({0, 0, 40, 31});
-    grid.afterDraw({0, 0, 40, 31});
+    grid.afterDraw({0, 0, 40, 31}, {0, 0, 40, 31});
     EXPECT_EQ(cells[0].state, CellState::Outdated);
     EXPECT_EQ(cells[1].state, CellState::Outdated);
     EXPECT_EQ(grid.counters().pixel_queries, 0);  // lazy: nothing read yet
@@ -115,7 +115,7 @@ TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
     EXPECT_EQ(grid.counters().pixel_queries, queries);
 
     // A full cell is never set outdated again.
-    grid.afterDraw({0, 0, 63, 31});
+    grid.afterDraw({0, 0, 63, 31}, {0, 0, 63, 31});
     EXPECT_TRUE(cells[0].full);
     EXPECT_EQ(cells[1].state, CellState::Outdated);
 
@@ -131,27 +131,51 @@ TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
     // A cell queried whole and found untouched goes back to completely free.
     grid.begin(&buffer, nullptr);
     buffer.clear();
-    grid.afterDraw({0, 0, 5, 5});  // drawn, but nothing was written into the buffer
+    grid.afterDraw({0, 0, 5, 5}, {0, 0, 5, 5});  // drawn, but nothing was written into the buffer
     EXPECT_FALSE(grid.isOccluded(boxAt({0, 0, 31, 31}), step, nullptr));
     EXPECT_EQ(cells[0].state, CellState::CompletelyFree);
 }
 
-TEST(LazyGridStates, BusyUpdateQueriesEveryCellUnderADrawAtOnce) {
+TEST(LazyGridStates, BusyUpdateQueriesEveryCellOfTheImageAreaAtOnce) {
     OcclusionBuffer buffer;
-    buffer.resize(96, 32);
+    buffer.resize(128, 32);
     LazyOcclusionGrid grid;
-    grid.configure(96, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy, {});
+    grid.configure(128, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy, {});
     grid.begin(&buffer, nullptr);
+    // Written over cells 0 and 1; the object's box rectangle reaches into cell 2.
     buffer.markOccluded({0, 0, 40, 31});
-    grid.afterDraw({0, 0, 40, 31});
+    grid.afterDraw({0, 0, 40, 31}, {0, 0, 70, 31});
     const auto& cells = grid.cells();
     EXPECT_TRUE(cells[0].full);
     EXPECT_EQ(cells[1].state, CellState::PartiallyFree);
-    EXPECT_EQ(cells[2].state, CellState::CompletelyFree);  // not under the draw
+    EXPECT_EQ(cells[2].state, CellState::CompletelyFree);  // read, nothing there
+    EXPECT_EQ(cells[3].state, CellState::CompletelyFree);  // outside: not read
+    EXPECT_EQ(grid.counters().cell_updates, 3);
+    for (const LazyGridCell& cell : cells) EXPECT_NE(cell.state, CellState::Outdated);
+    // As the paper states it, every cell of the image area again, the full one too.
+    grid.afterDraw({0, 0, 40, 31}, {0, 0, 40, 31});
+    EXPECT_EQ(grid.counters().cell_updates, 5);
+    // A camera inside an object writes more than its box's rectangle: all of it counts.
+    grid.afterDraw({0, 0, 127, 31}, {0, 0, 10, 10});
+    EXPECT_EQ(grid.counters().cell_updates, 9);
+}
+
+TEST(LazyGridStates, TightBusyUpdateQueriesOnlyWrittenCellsThatAreNotFull) {
+    OcclusionBuffer buffer;
+    buffer.resize(96, 32);
+    LazyOcclusionGrid grid;
+    grid.configure(96, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::BusyTight, {});
+    grid.begin(&buffer, nullptr);
+    buffer.markOccluded({0, 0, 40, 31});
+    grid.afterDraw({0, 0, 40, 31}, {0, 0, 70, 31});
+    const auto& cells = grid.cells();
+    EXPECT_TRUE(cells[0].full);
+    EXPECT_EQ(cells[1].state, CellState::PartiallyFree);
+    EXPECT_EQ(cells[2].state, CellState::CompletelyFree);  // not under the written pixels
     EXPECT_EQ(grid.counters().cell_updates, 2);
     for (const LazyGridCell& cell : cells) EXPECT_NE(cell.state, CellState::Outdated);
     // A full cell is not read again by later draws.
-    grid.afterDraw({0, 0, 40, 31});
+    grid.afterDraw({0, 0, 40, 31}, {0, 0, 40, 31});
     EXPECT_EQ(grid.counters().cell_updates, 3);
 }
 
@@ -196,7 +220,8 @@ TEST(LazyGridStates, ZBufferVariantKeepsZfarAndAnOutdatedFlag) {
     EXPECT_EQ(cells[0].zfar, kInf);
     EXPECT_FALSE(cells[0].outdated);
 
-    grid.afterDraw(z.drawCovering(0, {0, 0, 31, 31}, 10.0));
+    const PixelRect drawn = z.drawCovering(0, {0, 0, 31, 31}, 10.0);
+    grid.afterDraw(drawn, drawn);
     EXPECT_TRUE(cells[0].outdated);
     OcclusionStep step;
     // Behind the box (znear 20 > the cell's farthest depth, about 10): occluded,
@@ -238,7 +263,7 @@ void checkAgainstBruteForce(LazyGridVariant variant, LazyGridUpdate update,
             const PixelRect written =
                 z.drawCovering(step_index, randomRect(width / 2), rng.uniform(2.0, 50.0));
             buffer.markDrawn(z.zbuffer, written);
-            grid.afterDraw(written);
+            grid.afterDraw(written, written);
             continue;
         }
         const PixelRect rect = randomRect(width);
@@ -271,6 +296,8 @@ TEST(LazyGridExactness, OccludedExactlyWhenEveryPixelOfTheBoxIsHidden) {
                                    seed);
             checkAgainstBruteForce(LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy, {}, true,
                                    seed);
+            checkAgainstBruteForce(LazyGridVariant::OcclusionBuffer, LazyGridUpdate::BusyTight, {},
+                                   true, seed);
             checkAgainstBruteForce(LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy, {}, true, seed);
         });
     }
@@ -309,7 +336,7 @@ TEST(LazyGridHorizon, ABoxBehindAHorizonIsOccludedOnlyWhenAllOfItIsHidden) {
         EXPECT_LE(wall.y0, 50);
         EXPECT_GE(wall.y0, 49);
         buffer.markDrawn(z.zbuffer, wall);
-        grid.afterDraw(wall);
+        grid.afterDraw(wall, wall);
         const int horizon = [&] {
             for (int py = 0; py < 96; ++py)
                 if (std::isfinite(z.zbuffer.depthRow(py)[64])) return py;

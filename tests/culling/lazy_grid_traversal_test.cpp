@@ -77,6 +77,7 @@ TEST(LazyGridTraversal, Fig6DrawsAnObjectOnlyAfterTestingEveryBoxNotWhollyBehind
         test::withSeed(seed, [&] {
             checkTraversal(LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Lazy, seed);
             checkTraversal(LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy, seed);
+            checkTraversal(LazyGridVariant::OcclusionBuffer, LazyGridUpdate::BusyTight, seed);
         });
     }
 }
@@ -100,7 +101,7 @@ TEST(LazyGridTraversal, AWallHidesWhatIsBehindItAndNothingThatPeeksOver) {
     test::addSphere(scene, 20, {50, 38, 60}, 3.2);  // top at 41.2: over the wall's edge
     test::addSphere(scene, 21, {100, 15, 60}, 3);   // beside the wall
     scene.finalize();
-    for (const char* name : {"lazy-grid", "lazy-grid-z", "busy-grid"}) {
+    for (const char* name : {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"}) {
         auto culler = test::makeOrDie(name);
         EXPECT_EQ(test::cullIds(*culler, scene), (std::vector<int>{1, 20, 21})) << name;
     }
