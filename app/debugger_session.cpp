@@ -49,22 +49,19 @@ bool DebuggerSession::open(Scene scene, const std::string& source_file, const st
 }
 
 bool DebuggerSession::selectAlgorithm(const std::string& algo, std::string& error) {
-    assert(isOpen());
-    std::unique_ptr<Culler> culler, exact;
-    if (!makeCullers(algo, options_, culler, exact, error)) return false;
-    algo_ = algo;
-    culler_ = std::move(culler);
-    exact_ = std::move(exact);
-    const int target = frame_;
-    restart();
-    seek(target);
-    return true;
+    return replaceCullers(algo, options_, error);
 }
 
 bool DebuggerSession::setCullerOptions(const CullerOptions& options, std::string& error) {
+    return replaceCullers(algo_, options, error);
+}
+
+bool DebuggerSession::replaceCullers(const std::string& algo, const CullerOptions& options,
+                                     std::string& error) {
     assert(isOpen());
     std::unique_ptr<Culler> culler, exact;
-    if (!makeCullers(algo_, options, culler, exact, error)) return false;
+    if (!makeCullers(algo, options, culler, exact, error)) return false;
+    algo_ = algo;
     options_ = options;
     culler_ = std::move(culler);
     exact_ = std::move(exact);

@@ -75,6 +75,10 @@ public:
     const LazyGridSnapshot* lazyGridSnapshot() const;
 
 private:
+    // Makes the cullers for algo and options and re-runs up to the current frame;
+    // on failure keeps the current ones.
+    bool replaceCullers(const std::string& algo, const CullerOptions& options,
+                        std::string& error);
     void restart();          // reset both cullers, run frame 0
     void runFrame(int frame);
     Camera cameraOfFrame(int frame) const;

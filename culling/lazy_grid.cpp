@@ -84,9 +84,15 @@ void LazyOcclusionGrid::classify(const PixelRect& rect) {
         }
 }
 
-bool LazyOcclusionGrid::probablyFree(const LazyGridCell& cell, const PixelRect& cell_rect) const {
-    return extensions_.probability_threshold > 0.0 &&
-           cell.drawn_area < extensions_.probability_threshold * double(cell_rect.area());
+bool LazyOcclusionGrid::ratedFreeByProbability(int index, CellRole role,
+                                               std::vector<CellTouch>* trace) {
+    if (extensions_.probability_threshold <= 0.0) return false;
+    const LazyGridCell& cell = cells_[size_t(index)];
+    const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
+    if (!(cell.drawn_area < extensions_.probability_threshold * double(rect.area()))) return false;
+    ++counters_.probability_skips;
+    if (trace) trace->push_back({index, role, CellTouchKind::Probability, true});
+    return true;
 }
 
 long long LazyOcclusionGrid::queryFree(const PixelRect& rect) {
@@ -98,6 +104,10 @@ long long LazyOcclusionGrid::queryFree(const PixelRect& rect) {
 double LazyOcclusionGrid::queryFar(const PixelRect& rect) {
     ++counters_.pixel_queries;
     counters_.pixels_read += rect.area();
+    return farthestDepth(rect);
+}
+
+double LazyOcclusionGrid::farthestDepth(const PixelRect& rect) const {
     double farthest = 0.0;
     for (int py = rect.y0; py <= rect.y1; ++py) {
         const double* row = zbuffer_->depthRow(py);
@@ -218,12 +228,7 @@ bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
     step = OcclusionStep::InternalWithPixelQuery;
     for (int index : internal_query_list_) {
         LazyGridCell& cell = cells_[size_t(index)];
-        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
-        if (probablyFree(cell, rect)) {
-            ++counters_.probability_skips;
-            touch(trace, index, CellRole::Internal, CellTouchKind::Probability, true);
-            return false;
-        }
+        if (ratedFreeByProbability(index, CellRole::Internal, trace)) return false;
         updateCell(index);
         touch(trace, index, CellRole::Internal, CellTouchKind::PixelQuery, !cell.full);
         if (!cell.full) return false;
@@ -232,13 +237,9 @@ bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
     step = OcclusionStep::BorderWithPixelQuery;
     for (int index : border_query_list_) {
         LazyGridCell& cell = cells_[size_t(index)];
+        if (ratedFreeByProbability(index, CellRole::Border, trace)) return false;
         const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
         const PixelRect part = rect.intersect(box.rect);
-        if (probablyFree(cell, rect)) {
-            ++counters_.probability_skips;
-            touch(trace, index, CellRole::Border, CellTouchKind::Probability, true);
-            return false;
-        }
         bool part_free;
         if (extensions_.border_whole_fraction > 0.0 && cell.state == CellState::Outdated &&
             double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
@@ -296,12 +297,7 @@ bool LazyOcclusionGrid::isOccludedZBuffer(const BoxOnScreen& box, std::vector<Ce
     step = OcclusionStep::InternalWithPixelQuery;
     for (int index : internal_query_list_) {
         LazyGridCell& cell = cells_[size_t(index)];
-        const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
-        if (probablyFree(cell, rect)) {
-            ++counters_.probability_skips;
-            touch(trace, index, CellRole::Internal, CellTouchKind::Probability, true);
-            return false;
-        }
+        if (ratedFreeByProbability(index, CellRole::Internal, trace)) return false;
         updateCell(index);
         const bool free = znear <= cell.zfar;
         touch(trace, index, CellRole::Internal, CellTouchKind::PixelQuery, free);
@@ -311,28 +307,16 @@ bool LazyOcclusionGrid::isOccludedZBuffer(const BoxOnScreen& box, std::vector<Ce
     step = OcclusionStep::BorderWithPixelQuery;
     for (int index : border_query_list_) {
         LazyGridCell& cell = cells_[size_t(index)];
+        if (ratedFreeByProbability(index, CellRole::Border, trace)) return false;
         const PixelRect rect = cellRect(index % cells_x_, index / cells_x_);
         const PixelRect part = rect.intersect(box.rect);
-        if (probablyFree(cell, rect)) {
-            ++counters_.probability_skips;
-            touch(trace, index, CellRole::Border, CellTouchKind::Probability, true);
-            return false;
-        }
         bool free;
         if (extensions_.border_whole_fraction > 0.0 && cell.outdated &&
             double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
             updateCell(index);  // section 6: the whole cell, which bounds the part too
             free = znear <= cell.zfar;
-            if (free) {
-                // The whole cell is not behind the box; the part may still be.
-                double part_far = 0.0;
-                for (int py = part.y0; py <= part.y1; ++py) {
-                    const double* row = zbuffer_->depthRow(py);
-                    for (int px = part.x0; px <= part.x1; ++px)
-                        part_far = std::max(part_far, row[px]);
-                }
-                free = znear <= part_far;
-            }
+            // The whole cell is not behind the box; the part may still be.
+            if (free) free = znear <= farthestDepth(part);
         } else {
             free = znear <= queryFar(part);
         }

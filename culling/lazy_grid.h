@@ -168,11 +168,13 @@ private:
                                    OcclusionStep& step);
     bool isOccludedZBuffer(const BoxOnScreen& box, std::vector<CellTouch>* trace,
                            OcclusionStep& step);
-    // Section 6: may this cell be rated free without reading pixels?
-    bool probablyFree(const LazyGridCell& cell, const PixelRect& cell_rect) const;
+    // Section 6: rates the cell free without reading pixels when little was drawn
+    // into it (counted, and traced as CellTouchKind::Probability).
+    bool ratedFreeByProbability(int index, CellRole role, std::vector<CellTouch>* trace);
     // Pixel queries. Each counts one query and the pixels it reads.
     long long queryFree(const PixelRect& rect);  // free pixels (occlusion buffer)
     double queryFar(const PixelRect& rect);      // farthest depth (z-buffer)
+    double farthestDepth(const PixelRect& rect) const;  // the same, not counted
     // Reads a whole cell and sets its state (or zfar) exactly.
     void updateCell(int index);
 

@@ -189,12 +189,17 @@ void LazyGridCuller::drawLeaf(const Scene& scene, const ListEntry& entry, double
     }
 }
 
+LazyGridCuller::ListEntry LazyGridCuller::popFront(std::vector<ListEntry>& list) {
+    std::pop_heap(list.begin(), list.end(), later);
+    const ListEntry entry = list.back();
+    list.pop_back();
+    return entry;
+}
+
 void LazyGridCuller::traverseFig4(const Scene& scene, const Camera& camera, double t,
                                   FrameResult& out) {
     while (!test_list_.empty()) {
-        std::pop_heap(test_list_.begin(), test_list_.end(), later);
-        const ListEntry entry = test_list_.back();
-        test_list_.pop_back();
+        const ListEntry entry = popFront(test_list_);
         if (testNode(entry)) continue;
         const BvhNode& node = bvh_.nodes()[size_t(entry.node)];
         if (node.isLeaf()) {
@@ -212,15 +217,10 @@ void LazyGridCuller::traverseFig6(const Scene& scene, const Camera& camera, doub
         const bool draw_next = !draw_list_.empty() &&
                                (test_list_.empty() || draw_list_.front().key < test_list_.front().key);
         if (draw_next) {
-            std::pop_heap(draw_list_.begin(), draw_list_.end(), later);
-            const ListEntry entry = draw_list_.back();
-            draw_list_.pop_back();
-            drawLeaf(scene, entry, t, out);
+            drawLeaf(scene, popFront(draw_list_), t, out);
             continue;
         }
-        std::pop_heap(test_list_.begin(), test_list_.end(), later);
-        const ListEntry entry = test_list_.back();
-        test_list_.pop_back();
+        const ListEntry entry = popFront(test_list_);
         if (testNode(entry)) continue;
         const BvhNode& node = bvh_.nodes()[size_t(entry.node)];
         if (node.isLeaf()) {

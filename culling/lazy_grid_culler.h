@@ -91,6 +91,7 @@ private:
     static bool later(const ListEntry& a, const ListEntry& b) {
         return a.key > b.key || (a.key == b.key && a.node > b.node);
     }
+    static ListEntry popFront(std::vector<ListEntry>& list);  // the smallest key
     void traverseFig4(const Scene& scene, const Camera& camera, double t, FrameResult& out);
     void traverseFig6(const Scene& scene, const Camera& camera, double t, FrameResult& out);
     // Sorts node into the test-list if it may intersect the frustum.
