@@ -8,9 +8,15 @@
 # "No occlusion culling" is vfc, as in the paper ("but also with hierarchical
 # view frustum culling"). Takes about 10 minutes on one core.
 #
-# usage: scripts/lazy-grid-figures.sh [OUT_DIR] [RUNS]
+# usage: scripts/lazy-grid-figures.sh [--plots-only] [OUT_DIR] [RUNS]
+#   --plots-only   redraw the PNGs from the .csv / .txt files already in OUT_DIR
 set -euo pipefail
 cd "$(dirname "$0")/.."
+plots_only=0
+if [ "${1:-}" = "--plots-only" ]; then
+    plots_only=1
+    shift
+fi
 out=${1:-docs/results/lazy-grid}
 runs=${2:-3}
 scripts/install-deps.sh
@@ -20,8 +26,15 @@ if ! command -v gnuplot >/dev/null; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends gnuplot-nox
 fi
-scripts/build.sh >/dev/null
+[ "$plots_only" -eq 1 ] || scripts/build.sh >/dev/null
 exe=build/app/gridcull
+# Runs one bench into a table file, unless only the plots are redrawn.
+bench() {  # table-file bench-arguments...
+    local table=$1
+    shift
+    [ "$plots_only" -eq 1 ] && return 0
+    "$exe" bench "$@" | tee "$table"
+}
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -33,9 +46,9 @@ series() {  # csv algo column-name
         $1 == algo && col { print $2, $col }' "$1"
 }
 
-plot() {  # csv png title ylabel column algo...
-    local csv=$1 png=$2 title=$3 ylabel=$4 column=$5
-    shift 5
+plot() {  # csv png title ylabel column logscale(0|1) algo...
+    local csv=$1 png=$2 title=$3 ylabel=$4 column=$5 log=$6
+    shift 6
     local cmd="" algo
     for algo in "$@"; do
         series "$csv" "$algo" "$column" >"$tmp/$algo.dat"
@@ -49,6 +62,7 @@ set xlabel 'frame'
 set ylabel '$ylabel'
 set key outside right
 set grid
+$([ "$log" -eq 1 ] && echo "set logscale y")
 plot $cmd
 GP
 }
@@ -58,15 +72,15 @@ for scene in forest-walk-3d city-walk-3d; do
     for res in 640 1280; do
         name="$scene-$res"
         echo "== $name: $algos at $res pixels (4:3), $runs runs"
-        "$exe" bench "scenes/$scene.json" --algo "$algos" --runs "$runs" --oracle-res "$res" \
-            --csv "$out/$name.csv" | tee "$out/$name.txt"
+        bench "$out/$name.txt" "scenes/$scene.json" --algo "$algos" --runs "$runs" \
+            --oracle-res "$res" --csv "$out/$name.csv"
         plot "$out/$name.csv" "$out/$name-triangles.png" "$scene at $res: triangles drawn (Fig. 7)" \
-            "triangles" pvs_triangles vfc busy-grid lazy-grid lazy-grid-z
+            "triangles (log scale)" pvs_triangles 1 vfc busy-grid lazy-grid lazy-grid-z
         plot "$out/$name.csv" "$out/$name-pixel-queries.png" \
-            "$scene at $res: pixel-level queries (Fig. 8)" "queries" pixel_queries busy-grid \
+            "$scene at $res: pixel-level queries (Fig. 8)" "queries" pixel_queries 0 busy-grid \
             busy-grid-tight lazy-grid lazy-grid-z
         plot "$out/$name.csv" "$out/$name-time.png" "$scene at $res: cull time (Fig. 9)" \
-            "ms (median over runs)" cull_ms_median busy-grid busy-grid-tight lazy-grid lazy-grid-z
+            "ms (median over runs)" cull_ms_median 0 busy-grid busy-grid-tight lazy-grid lazy-grid-z
     done
 done
 
@@ -79,8 +93,8 @@ for scene in forest-walk-3d city-walk-3d; do
         list+=",lazy-grid:cell-size=$s:lazy-prob=0.5"
     done
     echo "== $scene: cell sizes $sizes at 640"
-    "$exe" bench "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" --oracle-res 640 \
-        | tee "$out/$scene-cell-size.txt"
+    bench "$out/$scene-cell-size.txt" "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" \
+        --oracle-res 640
     # Rows: label median ... pvs/exact (7th) ... pixel_queries=Q among the counters.
     awk '$1 ~ /cell-size=/ {
             split($1, a, "cell-size="); split(a[2], b, ":"); kind = $1; sub(/:cell-size=[0-9]+/, "", kind)
@@ -115,7 +129,7 @@ ext+=",lazy-grid:lazy-border-whole=0.25,lazy-grid:lazy-border-whole=0.5"
 ext+=",lazy-grid:lazy-large-box=0.1,lazy-grid:lazy-large-box=0.3,busy-grid,busy-grid-tight"
 for scene in forest-walk-3d city-walk-3d; do
     echo "== $scene: section 6 extensions at 640"
-    "$exe" bench "scenes/$scene.json" --algo "$ext" --runs "$runs" --oracle-res 640 \
-        | tee "$out/$scene-extensions.txt"
+    bench "$out/$scene-extensions.txt" "scenes/$scene.json" --algo "$ext" --runs "$runs" \
+        --oracle-res 640
 done
 echo "results in $out"
