@@ -82,9 +82,9 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
     std::string out;
     char line[1024];
     std::snprintf(line, sizeof line, "%-*s %10s %10s %10s %9s %9s %9s %10s %9s %10s  %s\n", width,
-                  "algo", "median ms", "p95 ms", ("x " + benches.front().algo).substr(0, 10).c_str(),
-                  "pvs", "exact", "pvs/exact", "false cull", "fc frames", "pvs tris",
-                  "counters (mean per frame)");
+                  "algo", "median ms", "p95 ms",
+                  ("x " + benches.front().algo).substr(0, 10).c_str(), "pvs", "exact", "pvs/exact",
+                  "false cull", "fc frames", "pvs tris", "counters (mean per frame)");
     out += line;
     for (size_t i = 0; i < benches.size(); ++i) {
         const BenchSummary& s = sums[i];
@@ -107,8 +107,7 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
     return out;
 }
 
-std::string formatBenchCsv(const std::vector<AlgoBench>& benches, int frames, int runs,
-                           double dt) {
+std::string formatBenchCsv(const std::vector<AlgoBench>& benches, int frames, int runs, double dt) {
     // Columns for every counter any algorithm reported, so all rows line up.
     uint32_t present = 0;
     for (const auto& b : benches) present |= b.stats.front().present;

@@ -51,42 +51,42 @@ namespace {
 // them (docs/LIMITS.md lists them all). Every culling command prints it.
 std::string cullerOptionsHelpText() {
     char text[4096];
-    std::snprintf(text, sizeof text,
-                  "  --oracle-res N     exact, 3D: pixels on the long side of the ID buffer,\n"
-                  "                     %d..%d (default 1024)\n"
-                  "  --oracle-rays N    exact, 2D: rays per full turn of the sweep, %d..%d\n"
-                  "                     (default 16384)\n"
-                  "  --rgvc-validity S  rgvc: validity period of a TBV in seconds, %g..%g\n"
-                  "                     (default 0.5; shorter: fewer revealed TBVs, more updates)\n"
-                  "  --grid-res N       rgvc: voxels along the world's longest axis, 1..%d\n"
-                  "                     (default: the scene's grid.resolution)\n"
-                  "  --lazy-res N       lazy-grid, lazy-grid-z, busy-grid(-tight): pixels on the long\n"
-                  "                     side of the software buffers, %d..%d (default: the\n"
-                  "                     --oracle-res value, so false culls compare like with like)\n"
-                  "  --cell-size N      lazy / busy grid: cell side in pixels, 1..%d (default 32;\n"
-                  "                     smaller: more cells to read, fewer pixels per query)\n"
-                  "  --lazy-prob P      lazy / busy grid, section 6: rate a cell free without a\n"
-                  "                     pixel query while less than P of it was drawn into, 0..1\n"
-                  "                     (default 0, off)\n"
-                  "  --lazy-border-whole F\n"
-                  "                     lazy / busy grid, section 6: query a border cell whole\n"
-                  "                     when the box covers more than F of it, 0..1 (default 0, off)\n"
-                  "  --lazy-large-box F lazy / busy grid, section 6: border cells count as\n"
-                  "                     internal for a box over F of the image, 0..1 (default 0, off)\n"
-                  "\n"
-                  "scene limits (docs/LIMITS.md); a file beyond them is rejected, exit status 3:\n"
-                  "  every number       finite and at most %.0f in magnitude (coordinates,\n"
-                  "                     sizes, speeds, times)\n"
-                  "  grid.resolution    at most %lld voxels in all (2D: 8192 x 8192; 3D: 406^3)\n"
-                  "  camera.fov_deg     3D: in (0, 180); 2D: in (0, 360]\n"
-                  "  camera.near, far   0 < near < far; aspect > 0\n"
-                  "  objects            at most %lld, listed and generated together\n"
-                  "  time.frames        1 to %lld; time.dt > 0\n",
-                  kMinOracleResolutionFlag, kMaxOracleResolution, kMinOracleRaysFlag,
-                  kMaxOracleRaysPerTurn, kMinRgvcValidity, kMaxRgvcValidity, kMaxGridResFlag,
-                  kMinOracleResolutionFlag, kMaxOracleResolution, kMaxCellSizeFlag,
-                  kMaxSceneCoordinate, (long long)kMaxGridVoxels, (long long)kMaxSceneObjects,
-                  (long long)kMaxSceneFrames);
+    std::snprintf(
+        text, sizeof text,
+        "  --oracle-res N     exact, 3D: pixels on the long side of the ID buffer,\n"
+        "                     %d..%d (default 1024)\n"
+        "  --oracle-rays N    exact, 2D: rays per full turn of the sweep, %d..%d\n"
+        "                     (default 16384)\n"
+        "  --rgvc-validity S  rgvc: validity period of a TBV in seconds, %g..%g\n"
+        "                     (default 0.5; shorter: fewer revealed TBVs, more updates)\n"
+        "  --grid-res N       rgvc: voxels along the world's longest axis, 1..%d\n"
+        "                     (default: the scene's grid.resolution)\n"
+        "  --lazy-res N       the lazy / busy grids: pixels on the long side of their\n"
+        "                     software buffers, %d..%d (default: the --oracle-res\n"
+        "                     value, so that false culls compare like with like)\n"
+        "  --cell-size N      lazy / busy grid: cell side in pixels, 1..%d (default 32;\n"
+        "                     smaller: more cells to read, fewer pixels per query)\n"
+        "  --lazy-prob P      lazy / busy grid, section 6: rate a cell free without a\n"
+        "                     pixel query while less than P of it was drawn into, 0..1\n"
+        "                     (default 0, off)\n"
+        "  --lazy-border-whole F\n"
+        "                     lazy / busy grid, section 6: query a border cell whole\n"
+        "                     when the box covers more than F of it, 0..1 (default 0, off)\n"
+        "  --lazy-large-box F lazy / busy grid, section 6: border cells count as\n"
+        "                     internal for a box over F of the image, 0..1 (default 0, off)\n"
+        "\n"
+        "scene limits (docs/LIMITS.md); a file beyond them is rejected, exit status 3:\n"
+        "  every number       finite and at most %.0f in magnitude (coordinates,\n"
+        "                     sizes, speeds, times)\n"
+        "  grid.resolution    at most %lld voxels in all (2D: 8192 x 8192; 3D: 406^3)\n"
+        "  camera.fov_deg     3D: in (0, 180); 2D: in (0, 360]\n"
+        "  camera.near, far   0 < near < far; aspect > 0\n"
+        "  objects            at most %lld, listed and generated together\n"
+        "  time.frames        1 to %lld; time.dt > 0\n",
+        kMinOracleResolutionFlag, kMaxOracleResolution, kMinOracleRaysFlag, kMaxOracleRaysPerTurn,
+        kMinRgvcValidity, kMaxRgvcValidity, kMaxGridResFlag, kMinOracleResolutionFlag,
+        kMaxOracleResolution, kMaxCellSizeFlag, kMaxSceneCoordinate, (long long)kMaxGridVoxels,
+        (long long)kMaxSceneObjects, (long long)kMaxSceneFrames);
     return text;
 }
 
@@ -135,17 +135,16 @@ std::set<std::string> withCullerOptionFlags(std::set<std::string> own) {
 
 std::string describeCullerOptions(const CullerOptions& options) {
     char text[512];
-    std::snprintf(text, sizeof text,
-                  "oracle-res=%d oracle-rays=%d rgvc-validity=%g grid-res=%s lazy-res=%s "
-                  "cell-size=%d lazy-prob=%g lazy-border-whole=%g lazy-large-box=%g",
-                  options.oracle_resolution, options.oracle_rays_per_turn, options.rgvc_validity_s,
-                  options.rgvc_grid_resolution > 0
-                      ? std::to_string(options.rgvc_grid_resolution).c_str()
-                      : "scene",
-                  options.lazy_resolution > 0 ? std::to_string(options.lazy_resolution).c_str()
-                                              : "oracle",
-                  options.lazy_cell_size, options.lazy_probability_threshold,
-                  options.lazy_border_whole_fraction, options.lazy_large_box_fraction);
+    std::snprintf(
+        text, sizeof text,
+        "oracle-res=%d oracle-rays=%d rgvc-validity=%g grid-res=%s lazy-res=%s "
+        "cell-size=%d lazy-prob=%g lazy-border-whole=%g lazy-large-box=%g",
+        options.oracle_resolution, options.oracle_rays_per_turn, options.rgvc_validity_s,
+        options.rgvc_grid_resolution > 0 ? std::to_string(options.rgvc_grid_resolution).c_str()
+                                         : "scene",
+        options.lazy_resolution > 0 ? std::to_string(options.lazy_resolution).c_str() : "oracle",
+        options.lazy_cell_size, options.lazy_probability_threshold,
+        options.lazy_border_whole_fraction, options.lazy_large_box_fraction);
     return text;
 }
 

@@ -78,9 +78,7 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
 }  // namespace
 
 int runBenchCommand(int argc, char** argv, int first) {
-    CliArgs args(
-        withCullerOptionFlags({"algo", "frames", "runs", "csv"}),
-        {"help", "no-quality"});
+    CliArgs args(withCullerOptionFlags({"algo", "frames", "runs", "csv"}), {"help", "no-quality"});
     if (!args.parse(argc, argv, first)) return usageError("bench", args.error());
     if (args.has("help")) {
         std::string names;
@@ -156,7 +154,8 @@ int runBenchCommand(int argc, char** argv, int first) {
                 if (run != 0) continue;
                 b.pvs_size[size_t(f)] = int(result.pvs.size());
                 for (int id : result.pvs)
-                    b.pvs_triangles[size_t(f)] += trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
+                    b.pvs_triangles[size_t(f)] +=
+                        trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
                 b.stats[size_t(f)] = result.stats;
                 if (quality) {
                     b.exact_size[size_t(f)] = int(exact.pvs.size());

@@ -41,8 +41,8 @@ void LazyOcclusionGrid::configure(int width, int height, int cell_size, LazyGrid
     const size_t count = size_t(cells_x_) * size_t(cells_y_);
     if (cells_.size() != count) {
         cells_.assign(count, LazyGridCell{});
-        for (auto* list : {&internal_cells_, &border_cells_, &internal_query_list_,
-                           &border_query_list_})
+        for (auto* list :
+             {&internal_cells_, &border_cells_, &internal_query_list_, &border_query_list_})
             list->reserve(count);
     }
 }
@@ -71,9 +71,9 @@ void LazyOcclusionGrid::classify(const PixelRect& rect) {
     internal_cells_.clear();
     border_cells_.clear();
     const PixelRect cells = cellsOf(rect);
-    const bool all_internal = extensions_.large_box_fraction > 0.0 &&
-                              double(rect.area()) >
-                                  extensions_.large_box_fraction * double(width_) * height_;
+    const bool all_internal =
+        extensions_.large_box_fraction > 0.0 &&
+        double(rect.area()) > extensions_.large_box_fraction * double(width_) * height_;
     for (int cy = cells.y0; cy <= cells.y1; ++cy)
         for (int cx = cells.x0; cx <= cells.x1; ++cx) {
             const int index = cy * cells_x_ + cx;
@@ -184,8 +184,7 @@ bool LazyOcclusionGrid::isOccluded(const BoxOnScreen& box, OcclusionStep& step,
 
 namespace {
 
-void touch(std::vector<CellTouch>* trace, int cell, CellRole role, CellTouchKind kind,
-           bool free) {
+void touch(std::vector<CellTouch>* trace, int cell, CellRole role, CellTouchKind kind, bool free) {
     if (trace) trace->push_back({cell, role, kind, free});
 }
 

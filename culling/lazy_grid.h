@@ -75,9 +75,9 @@ enum class LazyGridUpdate : uint8_t { Lazy, Busy, BusyTight };
 enum class CellState : uint8_t { CompletelyFree, PartiallyFree, Outdated };
 
 struct LazyGridCell {
-    CellState state = CellState::CompletelyFree;  // occlusion-buffer variant
-    bool full = false;                            // occlusion-buffer variant
-    bool outdated = false;                        // z-buffer variant
+    CellState state = CellState::CompletelyFree;            // occlusion-buffer variant
+    bool full = false;                                      // occlusion-buffer variant
+    bool outdated = false;                                  // z-buffer variant
     double zfar = std::numeric_limits<double>::infinity();  // z-buffer variant; +inf = zmax
     double drawn_area = 0.0;  // pixels of written rectangles inside this cell (section 6)
 };
@@ -172,8 +172,8 @@ private:
     // into it (counted, and traced as CellTouchKind::Probability).
     bool ratedFreeByProbability(int index, CellRole role, std::vector<CellTouch>* trace);
     // Pixel queries. Each counts one query and the pixels it reads.
-    long long queryFree(const PixelRect& rect);  // free pixels (occlusion buffer)
-    double queryFar(const PixelRect& rect);      // farthest depth (z-buffer)
+    long long queryFree(const PixelRect& rect);         // free pixels (occlusion buffer)
+    double queryFar(const PixelRect& rect);             // farthest depth (z-buffer)
     double farthestDepth(const PixelRect& rect) const;  // the same, not counted
     // Reads a whole cell and sets its state (or zfar) exactly.
     void updateCell(int index);
@@ -183,7 +183,7 @@ private:
     LazyGridExtensions extensions_;
     int width_ = 0, height_ = 0, cell_size_ = 32, cells_x_ = 0, cells_y_ = 0;
     std::vector<LazyGridCell> cells_;
-    std::vector<int32_t> internal_cells_, border_cells_;  // of the box under test
+    std::vector<int32_t> internal_cells_, border_cells_;            // of the box under test
     std::vector<int32_t> internal_query_list_, border_query_list_;  // the paper's lists
     const OcclusionBuffer* obuffer_ = nullptr;
     const OracleIdBuffer* zbuffer_ = nullptr;

@@ -32,8 +32,7 @@ void LazyGridCuller::imageSize(const CullerOptions& options, double aspect, int&
                                int& height) {
     const int resolution =
         options.lazy_resolution > 0 ? options.lazy_resolution : options.oracle_resolution;
-    ExactOracle::imageSize(std::clamp(resolution, 1, kMaxOracleResolution), aspect, width,
-                           height);
+    ExactOracle::imageSize(std::clamp(resolution, 1, kMaxOracleResolution), aspect, width, height);
 }
 
 void LazyGridCuller::reset(const Scene& scene) {
@@ -170,7 +169,8 @@ void LazyGridCuller::drawLeaf(const Scene& scene, const ListEntry& entry, double
                 drawn = zbuffer_.drawBox(index, object.box.translated(shift));
                 break;
             case ShapeKind::Mesh:
-                if (object.mesh) drawn = zbuffer_.drawMesh(index, *object.mesh, object.center + shift);
+                if (object.mesh)
+                    drawn = zbuffer_.drawMesh(index, *object.mesh, object.center + shift);
                 break;
             case ShapeKind::Polygon:
                 break;  // 2D only; supports() keeps 2D scenes away
@@ -214,8 +214,9 @@ void LazyGridCuller::traverseFig4(const Scene& scene, const Camera& camera, doub
 void LazyGridCuller::traverseFig6(const Scene& scene, const Camera& camera, double t,
                                   FrameResult& out) {
     while (!test_list_.empty() || !draw_list_.empty()) {
-        const bool draw_next = !draw_list_.empty() &&
-                               (test_list_.empty() || draw_list_.front().key < test_list_.front().key);
+        const bool draw_next =
+            !draw_list_.empty() &&
+            (test_list_.empty() || draw_list_.front().key < test_list_.front().key);
         if (draw_next) {
             drawLeaf(scene, popFront(draw_list_), t, out);
             continue;

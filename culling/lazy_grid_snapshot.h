@@ -29,7 +29,7 @@ struct LazyGridTest {
 // One step of the traversal, in order.
 struct LazyGridEvent {
     enum Kind : uint8_t { Test, Draw } kind = Test;
-    int32_t index = 0;  // Test: into tests; Draw: the object index drawn
+    int32_t index = 0;   // Test: into tests; Draw: the object index drawn
     double depth = 0.0;  // Test: the box's znear; Draw: the drawn leaf box's zfar
     PixelRect written;   // Draw: the pixels the draw may have written
 };

@@ -27,7 +27,9 @@ void OcclusionBuffer::resize(int width, int height) {
     bits_.assign(words_per_row_ * size_t(height), 0);
 }
 
-void OcclusionBuffer::clear() { std::fill(bits_.begin(), bits_.end(), 0); }
+void OcclusionBuffer::clear() {
+    std::fill(bits_.begin(), bits_.end(), 0);
+}
 
 void OcclusionBuffer::markDrawn(const OracleIdBuffer& zbuffer, const PixelRect& rect) {
     assert(zbuffer.width() == width_ && zbuffer.height() == height_);

@@ -79,7 +79,8 @@ TEST(BoundingVolumeHierarchy, RebuildsOnceRefittingHasLoosenedTheBoxes) {
     for (int frame = 1; frame < 40 && rebuilt_at < 0; ++frame) {
         if (bvh.update(scene, frame * 0.05)) rebuilt_at = frame;
         if (rebuilt_at < 0) {
-            EXPECT_LE(bvh.surfaceAreaSum(), BoundingVolumeHierarchy::kRebuildGrowth * area0 * 1.0001);
+            EXPECT_LE(bvh.surfaceAreaSum(),
+                      BoundingVolumeHierarchy::kRebuildGrowth * area0 * 1.0001);
         }
     }
     EXPECT_GT(rebuilt_at, 0);

@@ -49,7 +49,8 @@ void runScene(const Scene& scene, const CullerOptions& options,
         for (size_t k = 0; k < cullers.size(); ++k) {
             cullers[k]->cull(scene, camera, t, result);
             ASSERT_TRUE(std::is_sorted(result.pvs.begin(), result.pvs.end()));
-            ASSERT_TRUE(std::adjacent_find(result.pvs.begin(), result.pvs.end()) == result.pvs.end());
+            ASSERT_TRUE(std::adjacent_find(result.pvs.begin(), result.pvs.end()) ==
+                        result.pvs.end());
             EXPECT_TRUE(test::isSubset(result.pvs, frustum.pvs)) << names[k] << " frame " << frame;
             std::vector<int> missed;
             std::set_difference(exact.pvs.begin(), exact.pvs.end(), result.pvs.begin(),
@@ -67,17 +68,20 @@ void runScene(const Scene& scene, const CullerOptions& options,
 }
 
 void sweep(const CullerOptions& options, const char* label) {
-    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"};
+    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
+                                            "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
     for (uint64_t seed : test::seedsToRun(1, kScenes)) {
-        test::withSeed(seed, [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
+        test::withSeed(seed,
+                       [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
     }
     for (size_t k = 0; k < names.size(); ++k) {
         const double exact = double(std::max(1LL, totals[k].exact));
-        std::printf("[lazy-grid sweep] %s %s: %lld frames, false culls %lld, pvs/exact %.3f "
-                    "(vfc/exact %.3f)\n",
-                    label, names[k].c_str(), totals[k].frames, totals[k].false_culls,
-                    double(totals[k].pvs) / exact, double(totals[k].vfc) / exact);
+        std::printf(
+            "[lazy-grid sweep] %s %s: %lld frames, false culls %lld, pvs/exact %.3f "
+            "(vfc/exact %.3f)\n",
+            label, names[k].c_str(), totals[k].frames, totals[k].false_culls,
+            double(totals[k].pvs) / exact, double(totals[k].vfc) / exact);
         EXPECT_EQ(totals[k].false_culls, 0) << names[k];
     }
 }
@@ -101,10 +105,12 @@ TEST(LazyGridDifferential, NoFalseCullsWithSmallCellsAndEverySectionSixExtension
 TEST(LazyGridDifferential, NoFalseCullsAtTheOracleDefaultResolutionOnFewerScenes) {
     // 1024 pixels on the long side, the window's setting: a few scenes only.
     CullerOptions options;
-    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"};
+    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
+                                            "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
     for (uint64_t seed : test::seedsToRun(10001, 12)) {
-        test::withSeed(seed, [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
+        test::withSeed(seed,
+                       [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
     }
     for (size_t k = 0; k < names.size(); ++k) EXPECT_EQ(totals[k].false_culls, 0) << names[k];
 }

@@ -53,7 +53,8 @@ inline Scene lazyGridRandomScene(uint64_t seed) {
         if (rng.uniform() < 0.35) {
             scene.objects.back().motion.kind = MotionKind::Linear;
             scene.objects.back().motion.velocity = randomPoint3(rng, -15, 15);
-            scene.objects.back().motion.max_speed = glm::length(scene.objects.back().motion.velocity);
+            scene.objects.back().motion.max_speed =
+                glm::length(scene.objects.back().motion.velocity);
         }
     }
     // The camera path: two keys, inside or outside the world.

@@ -33,9 +33,10 @@ TEST(LazyGridScreen, RectangleHoldsEveryPixelCentreThatSeesTheBox) {
             ScreenMapping mapping;
             mapping.set(camera, width, height);
             // Boxes mostly in front of the camera, some around or behind it.
-            const glm::dvec3 c = camera.position +
-                                 glm::normalize(camera.target - camera.position) * rng.uniform(-5.0, 30.0) +
-                                 test::randomPoint3(rng, -8, 8);
+            const glm::dvec3 c =
+                camera.position +
+                glm::normalize(camera.target - camera.position) * rng.uniform(-5.0, 30.0) +
+                test::randomPoint3(rng, -8, 8);
             const glm::dvec3 half = test::randomPoint3(rng, 0.01, 12.0);
             const Aabb box{c - half, c + half};
             const BoxOnScreen on_screen = mapping.project(box);

@@ -72,7 +72,9 @@ TEST(LazyGridCells, LargeBoxExtensionTreatsBorderCellsAsInternal) {
     EXPECT_EQ(grid.borderCells().size(), 4u);
 }
 
-BoxOnScreen boxAt(const PixelRect& rect, double znear = 1.0) { return {rect, znear, znear + 1}; }
+BoxOnScreen boxAt(const PixelRect& rect, double znear = 1.0) {
+    return {rect, znear, znear + 1};
+}
 
 TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
     OcclusionBuffer buffer;

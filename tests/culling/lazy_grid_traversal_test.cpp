@@ -84,7 +84,8 @@ TEST(LazyGridTraversal, Fig6DrawsAnObjectOnlyAfterTestingEveryBoxNotWhollyBehind
 
 TEST(LazyGridTraversal, Fig4TestsBoxesInOrderOfZnear) {
     for (uint64_t seed : test::seedsToRun(1, 80)) {
-        test::withSeed(seed, [&] { checkTraversal(LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy, seed); });
+        test::withSeed(
+            seed, [&] { checkTraversal(LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy, seed); });
     }
 }
 
