@@ -198,9 +198,7 @@ bool OracleIdBuffer::drawBox(int index, const Aabb& box) {
     double u_lo = z_min, u_hi = z_max, v_lo = z_min, v_hi = z_max;
     glm::dvec3 corners[8];
     for (int i = 0; i < 8; ++i) {
-        const glm::dvec3 world{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                               (i & 4) ? box.max.z : box.min.z};
-        corners[i] = toView(world);
+        corners[i] = toView(box.corner(i));
         z_min = std::min(z_min, corners[i].z);
         z_max = std::max(z_max, corners[i].z);
     }

@@ -33,9 +33,7 @@ BoxOnScreen ScreenMapping::project(const Aabb& box) const {
     double zmin = std::numeric_limits<double>::infinity();
     double zmax = -zmin;
     for (int i = 0; i < 8; ++i) {
-        const glm::dvec3 world{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                               (i & 4) ? box.max.z : box.min.z};
-        corner[i] = toView(world);
+        corner[i] = toView(box.corner(i));
         zmin = std::min(zmin, corner[i].z);
         zmax = std::max(zmax, corner[i].z);
     }

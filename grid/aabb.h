@@ -18,6 +18,10 @@ struct Aabb {
         max = glm::max(max, other.max);
     }
     Aabb translated(const glm::dvec3& offset) const { return {min + offset, max + offset}; }
+    // Corner i in [0, 8): bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::dvec3 corner(int i) const {
+        return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+    }
     bool contains(const glm::dvec3& p) const {
         return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y &&
                p.z <= max.z;
