@@ -4,8 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "culling/exact_oracle_id_buffer.h"
-#include "culling/occlusion_buffer.h"
+#include "culling/lazy_grid_pixels.h"
 
 namespace gridcull {
 
@@ -47,11 +46,9 @@ void LazyOcclusionGrid::configure(int width, int height, int cell_size, LazyGrid
     }
 }
 
-void LazyOcclusionGrid::begin(const OcclusionBuffer* obuffer, const OracleIdBuffer* zbuffer) {
-    assert(variant_ != LazyGridVariant::OcclusionBuffer || obuffer);
-    assert(variant_ != LazyGridVariant::ZBuffer || zbuffer);
-    obuffer_ = obuffer;
-    zbuffer_ = zbuffer;
+void LazyOcclusionGrid::begin(const LazyGridPixels* pixels) {
+    assert(pixels);
+    pixels_ = pixels;
     std::fill(cells_.begin(), cells_.end(), LazyGridCell{});
     counters_ = LazyGridCounters{};
 }
@@ -98,22 +95,13 @@ bool LazyOcclusionGrid::ratedFreeByProbability(int index, CellRole role,
 long long LazyOcclusionGrid::queryFree(const PixelRect& rect) {
     ++counters_.pixel_queries;
     counters_.pixels_read += rect.area();
-    return obuffer_->countFree(rect);
+    return pixels_->countFree(rect);
 }
 
 double LazyOcclusionGrid::queryFar(const PixelRect& rect) {
     ++counters_.pixel_queries;
     counters_.pixels_read += rect.area();
-    return farthestDepth(rect);
-}
-
-double LazyOcclusionGrid::farthestDepth(const PixelRect& rect) const {
-    double farthest = 0.0;
-    for (int py = rect.y0; py <= rect.y1; ++py) {
-        const double* row = zbuffer_->depthRow(py);
-        for (int px = rect.x0; px <= rect.x1; ++px) farthest = std::max(farthest, row[px]);
-    }
-    return farthest;
+    return pixels_->farthestDepth(rect);
 }
 
 void LazyOcclusionGrid::updateCell(int index) {
@@ -245,7 +233,7 @@ bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
             // Section 6: query the whole cell (one query, counted once); the part,
             // a subset of the pixels just read, is answered from the same words.
             updateCell(index);
-            part_free = !cell.full && obuffer_->countFree(part) > 0;
+            part_free = !cell.full && pixels_->countFree(part) > 0;
         } else {
             part_free = queryFree(part) > 0;
             if (part_free && cell.state == CellState::Outdated)
@@ -315,7 +303,7 @@ bool LazyOcclusionGrid::isOccludedZBuffer(const BoxOnScreen& box, std::vector<Ce
             updateCell(index);  // section 6: the whole cell, which bounds the part too
             free = znear <= cell.zfar;
             // The whole cell is not behind the box; the part may still be.
-            if (free) free = znear <= farthestDepth(part);
+            if (free) free = znear <= pixels_->farthestDepth(part);
         } else {
             free = znear <= queryFar(part);
         }

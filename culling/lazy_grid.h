@@ -60,8 +60,7 @@
 
 namespace gridcull {
 
-class OcclusionBuffer;
-class OracleIdBuffer;
+class LazyGridPixels;
 
 enum class LazyGridVariant : uint8_t { OcclusionBuffer, ZBuffer };
 // Lazy: section 3's lazy update. Busy: section 7's busy update as the paper
@@ -130,8 +129,9 @@ public:
     void configure(int width, int height, int cell_size, LazyGridVariant variant,
                    LazyGridUpdate update, const LazyGridExtensions& extensions);
     // Every cell completely free / zfar = zmax, nothing outdated; counters zeroed.
-    // The buffers must be cleared alongside. O(cells).
-    void begin(const OcclusionBuffer* obuffer, const OracleIdBuffer* zbuffer);
+    // `pixels` answers the pixel-level queries (culling/lazy_grid_pixels.h) and must
+    // be cleared alongside; it must outlive the frame. O(cells).
+    void begin(const LazyGridPixels* pixels);
 
     // Fig. 2 (occlusion buffer) or Fig. 3 (z-buffer) for a box at `box`, lazily
     // updating the cells it needs. When `trace` is given, every cell touched is
@@ -174,7 +174,6 @@ private:
     // Pixel queries. Each counts one query and the pixels it reads.
     long long queryFree(const PixelRect& rect);         // free pixels (occlusion buffer)
     double queryFar(const PixelRect& rect);             // farthest depth (z-buffer)
-    double farthestDepth(const PixelRect& rect) const;  // the same, not counted
     // Reads a whole cell and sets its state (or zfar) exactly.
     void updateCell(int index);
 
@@ -185,8 +184,7 @@ private:
     std::vector<LazyGridCell> cells_;
     std::vector<int32_t> internal_cells_, border_cells_;            // of the box under test
     std::vector<int32_t> internal_query_list_, border_query_list_;  // the paper's lists
-    const OcclusionBuffer* obuffer_ = nullptr;
-    const OracleIdBuffer* zbuffer_ = nullptr;
+    const LazyGridPixels* pixels_ = nullptr;
     LazyGridCounters counters_;
 };
 

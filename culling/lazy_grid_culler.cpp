@@ -10,12 +10,18 @@
 namespace gridcull {
 
 LazyGridCuller::LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update,
-                               const CullerOptions& options)
-    : variant_(variant), update_(update), options_(options) {
+                               const CullerOptions& options, std::unique_ptr<LazyGridTarget> target,
+                               std::string name)
+    : variant_(variant),
+      update_(update),
+      options_(options),
+      target_(target ? std::move(target) : std::make_unique<SoftwareLazyGridTarget>()),
+      name_(std::move(name)) {
     assert(variant == LazyGridVariant::OcclusionBuffer || update == LazyGridUpdate::Lazy);
 }
 
 const char* LazyGridCuller::name() const {
+    if (!name_.empty()) return name_.c_str();
     if (update_ == LazyGridUpdate::Busy) return "busy-grid";
     if (update_ == LazyGridUpdate::BusyTight) return "busy-grid-tight";
     return variant_ == LazyGridVariant::ZBuffer ? "lazy-grid-z" : "lazy-grid";
@@ -40,7 +46,7 @@ void LazyGridCuller::reset(const Scene& scene) {
     size_t mesh_vertices = 0;
     for (const SceneObject& object : scene.objects)
         if (object.mesh) mesh_vertices = std::max(mesh_vertices, object.mesh->vertices.size());
-    zbuffer_.reserveMeshVertices(mesh_vertices);
+    target_->reserveMeshVertices(mesh_vertices);
     test_list_.clear();
     draw_list_.clear();
     test_list_.reserve(bvh_.nodes().size());
@@ -57,20 +63,15 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
 
     int width, height;
     imageSize(options_, camera.aspect, width, height);
-    zbuffer_.resize(width, height);
     mapping_.set(camera, width, height);
-    zbuffer_.begin(camera);
     const bool occlusion_buffer = variant_ == LazyGridVariant::OcclusionBuffer;
-    if (occlusion_buffer) {
-        obuffer_.resize(width, height);
-        obuffer_.clear();
-    }
+    target_->begin(camera, width, height, occlusion_buffer);
     const LazyGridExtensions extensions{options_.lazy_probability_threshold,
                                         options_.lazy_border_whole_fraction,
                                         options_.lazy_large_box_fraction};
     grid_.configure(width, height, std::max(1, options_.lazy_cell_size), variant_, update_,
                     extensions);
-    grid_.begin(occlusion_buffer ? &obuffer_ : nullptr, &zbuffer_);
+    grid_.begin(target_.get());
 
     const int rebuilds_before = bvh_.rebuilds();
     bvh_.update(scene, t);
@@ -160,28 +161,9 @@ void LazyGridCuller::drawLeaf(const Scene& scene, const ListEntry& entry, double
         const int index = bvh_.objectOrder()[size_t(k)];
         const SceneObject& object = scene.objects[size_t(index)];
         const glm::dvec3 shift = scene.displacementAt(object, t);
-        bool drawn = false;
-        switch (object.shape) {
-            case ShapeKind::Sphere:
-                drawn = zbuffer_.drawSphere(index, object.center + shift, object.radius);
-                break;
-            case ShapeKind::Box:
-                drawn = zbuffer_.drawBox(index, object.box.translated(shift));
-                break;
-            case ShapeKind::Mesh:
-                if (object.mesh)
-                    drawn = zbuffer_.drawMesh(index, *object.mesh, object.center + shift);
-                break;
-            case ShapeKind::Polygon:
-                break;  // 2D only; supports() keeps 2D scenes away
-        }
         PixelRect written;
-        if (drawn) {
-            const ScreenRange cols = zbuffer_.lastDrawCols(), rows = zbuffer_.lastDrawRows();
-            written = {cols.lo, rows.lo, cols.hi, rows.hi};
-            if (variant_ == LazyGridVariant::OcclusionBuffer) obuffer_.markDrawn(zbuffer_, written);
+        if (target_->draw(object, index, shift, entry.box.rect, written))
             grid_.afterDraw(written, entry.box.rect);
-        }
         out.pvs.push_back(object.id);
         triangles_drawn_ += trianglesOf(object);
         if (snapshot_enabled_)

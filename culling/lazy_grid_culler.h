@@ -49,21 +49,25 @@
 // traversal: O(log nodes) per node, O(cells) per test, O(pixels) per query and per
 // object drawn. Steady state allocates nothing (snapshots aside).
 #pragma once
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "culling/bounding_volume_hierarchy.h"
 #include "culling/culler.h"
-#include "culling/exact_oracle_id_buffer.h"
 #include "culling/lazy_grid.h"
+#include "culling/lazy_grid_pixels.h"
 #include "culling/lazy_grid_screen.h"
 #include "culling/lazy_grid_snapshot.h"
-#include "culling/occlusion_buffer.h"
 
 namespace gridcull {
 
 class LazyGridCuller final : public Culler {
 public:
-    LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update, const CullerOptions& options);
+    // Draws into the software buffers (SoftwareLazyGridTarget) unless given another
+    // target, e.g. the app's OpenGL one; `name` then replaces name() ("" keeps it).
+    LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update, const CullerOptions& options,
+                   std::unique_ptr<LazyGridTarget> target = nullptr, std::string name = "");
     const char* name() const override;
     bool supports(const Scene& scene, std::string& why) const override;
     void reset(const Scene& scene) override;
@@ -74,8 +78,6 @@ public:
     void setSnapshotEnabled(bool enabled) { snapshot_enabled_ = enabled; }
     const LazyGridSnapshot& snapshot() const { return snapshot_; }
     const LazyOcclusionGrid& grid() const { return grid_; }
-    const OcclusionBuffer& occlusionBuffer() const { return obuffer_; }
-    const OracleIdBuffer& zBuffer() const { return zbuffer_; }
 
     // The image size for a camera: long side = resolution (lazy_resolution, or
     // the oracle's when 0).
@@ -107,8 +109,8 @@ private:
     CullerOptions options_;
     BoundingVolumeHierarchy bvh_;
     ScreenMapping mapping_;
-    OracleIdBuffer zbuffer_;
-    OcclusionBuffer obuffer_;
+    std::unique_ptr<LazyGridTarget> target_;
+    std::string name_;
     LazyOcclusionGrid grid_;
     std::vector<ListEntry> test_list_, draw_list_;
     int64_t triangles_drawn_ = 0;

@@ -14,6 +14,7 @@
 
 #include "culling/exact_oracle_id_buffer.h"
 #include "culling/lazy_grid.h"
+#include "culling/lazy_grid_pixels.h"
 #include "culling/occlusion_buffer.h"
 #include "culling/seeded_random.h"
 #include "tests/common/test_seeds.h"
@@ -81,7 +82,8 @@ TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
     buffer.resize(64, 32);  // two cells of 32
     LazyOcclusionGrid grid;
     grid.configure(64, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Lazy, {});
-    grid.begin(&buffer, nullptr);
+    const LazyGridBuffers pixels(&buffer, nullptr);
+    grid.begin(&pixels);
     const auto& cells = grid.cells();
     EXPECT_EQ(cells[0].state, CellState::CompletelyFree);
     EXPECT_FALSE(cells[0].full);
@@ -131,7 +133,7 @@ TEST(LazyGridStates, OcclusionBufferLazyUpdate) {
     EXPECT_EQ(cells[1].state, CellState::PartiallyFree);
 
     // A cell queried whole and found untouched goes back to completely free.
-    grid.begin(&buffer, nullptr);
+    grid.begin(&pixels);
     buffer.clear();
     grid.afterDraw({0, 0, 5, 5}, {0, 0, 5, 5});  // drawn, but nothing was written into the buffer
     EXPECT_FALSE(grid.isOccluded(boxAt({0, 0, 31, 31}), step, nullptr));
@@ -143,7 +145,8 @@ TEST(LazyGridStates, BusyUpdateQueriesEveryCellOfTheImageAreaAtOnce) {
     buffer.resize(128, 32);
     LazyOcclusionGrid grid;
     grid.configure(128, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy, {});
-    grid.begin(&buffer, nullptr);
+    const LazyGridBuffers pixels(&buffer, nullptr);
+    grid.begin(&pixels);
     // Written over cells 0 and 1; the object's box rectangle reaches into cell 2.
     buffer.markOccluded({0, 0, 40, 31});
     grid.afterDraw({0, 0, 40, 31}, {0, 0, 70, 31});
@@ -167,7 +170,8 @@ TEST(LazyGridStates, TightBusyUpdateQueriesOnlyWrittenCellsThatAreNotFull) {
     buffer.resize(96, 32);
     LazyOcclusionGrid grid;
     grid.configure(96, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::BusyTight, {});
-    grid.begin(&buffer, nullptr);
+    const LazyGridBuffers pixels(&buffer, nullptr);
+    grid.begin(&pixels);
     buffer.markOccluded({0, 0, 40, 31});
     grid.afterDraw({0, 0, 40, 31}, {0, 0, 70, 31});
     const auto& cells = grid.cells();
@@ -217,7 +221,8 @@ TEST(LazyGridStates, ZBufferVariantKeepsZfarAndAnOutdatedFlag) {
     ZScene z(64, 32);
     LazyOcclusionGrid grid;
     grid.configure(64, 32, 32, LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy, {});
-    grid.begin(nullptr, &z.zbuffer);
+    const LazyGridBuffers pixels(nullptr, &z.zbuffer);
+    grid.begin(&pixels);
     const auto& cells = grid.cells();
     EXPECT_EQ(cells[0].zfar, kInf);
     EXPECT_FALSE(cells[0].outdated);
@@ -254,7 +259,8 @@ void checkAgainstBruteForce(LazyGridVariant variant, LazyGridUpdate update,
     buffer.resize(width, height);
     LazyOcclusionGrid grid;
     grid.configure(width, height, cell, variant, update, ext);
-    grid.begin(&buffer, &z.zbuffer);
+    const LazyGridBuffers pixels(&buffer, &z.zbuffer);
+    grid.begin(&pixels);
     auto randomRect = [&](int max_side) {
         const int x0 = int(rng.below(uint64_t(width))), y0 = int(rng.below(uint64_t(height)));
         return PixelRect{x0, y0, std::min(width - 1, x0 + int(rng.below(uint64_t(max_side)))),
@@ -332,7 +338,8 @@ TEST(LazyGridHorizon, ABoxBehindAHorizonIsOccludedOnlyWhenAllOfItIsHidden) {
         buffer.resize(128, 96);
         LazyOcclusionGrid grid;
         grid.configure(128, 96, 32, variant, LazyGridUpdate::Lazy, {});
-        grid.begin(&buffer, &z.zbuffer);
+        const LazyGridBuffers pixels(&buffer, &z.zbuffer);
+        grid.begin(&pixels);
         // The wall covers rows 50..95: its horizon is inside the cell row 32..63.
         const PixelRect wall = z.drawCovering(0, {0, 50, 127, 95}, 10.0);
         EXPECT_LE(wall.y0, 50);
