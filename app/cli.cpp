@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/app_cullers.h"
 #include "app/cli_args.h"
 #include "app/window.h"
 #include "culling/exact_oracle.h"
@@ -148,9 +149,9 @@ std::string describeCullerOptions(const CullerOptions& options) {
     return text;
 }
 
-bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error) {
+bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error,
+                     const std::vector<std::string>& known) {
     names.clear();
-    const std::vector<std::string> known = cullerNames();
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
@@ -183,7 +184,7 @@ bool parseAlgoVariants(const std::string& list, const CullerOptions& base,
         while (std::getline(fields, field, ':')) parts.push_back(field);
         if (parts.empty()) parts.push_back("");
         std::vector<std::string> names;
-        if (!splitAlgorithms(parts[0], names, error)) return false;
+        if (!splitAlgorithms(parts[0], names, error, appCullerNames())) return false;
         AlgoVariant variant{entry, parts[0], base};
         std::vector<std::string> flags;
         for (size_t i = 1; i < parts.size(); ++i) {

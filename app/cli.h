@@ -36,8 +36,10 @@ bool readCullerOptions(CliArgs& args, CullerOptions& options);
 std::set<std::string> withCullerOptionFlags(std::set<std::string> own);
 // One line naming every option's value, printed by bench so a table says what it measured.
 std::string describeCullerOptions(const CullerOptions& options);
-// Checks that every name in a comma-separated list is an algorithm.
-bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error);
+// Checks that every name in a comma-separated list is one of `known` (default:
+// cullerNames(), what the window offers; cull and bench also take appCullerNames()).
+bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error,
+                     const std::vector<std::string>& known = cullerNames());
 
 // One entry of bench's --algo list: NAME, or NAME:FLAG=VALUE[:FLAG=VALUE...] where
 // each FLAG is a culler option flag without its dashes (cell-size, lazy-prob, ...),

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/app_cullers.h"
 #include "app/bench_table.h"
 #include "app/cli.h"
 #include "app/cli_args.h"
@@ -82,7 +83,7 @@ int runBenchCommand(int argc, char** argv, int first) {
     if (!args.parse(argc, argv, first)) return usageError("bench", args.error());
     if (args.has("help")) {
         std::string names;
-        for (const auto& n : cullerNames()) names += " " + n;
+        for (const auto& n : appCullerNames()) names += " " + n;
         std::printf("%s%s%s%s", kBenchHelp, names.c_str(), kBenchHelpTail, kCullerOptionsHelp);
         return kExitOk;
     }
@@ -107,7 +108,7 @@ int runBenchCommand(int argc, char** argv, int first) {
     std::vector<std::unique_ptr<Culler>> cullers;
     std::vector<AlgoBench> benches(algos.size());
     for (size_t i = 0; i < algos.size(); ++i) {
-        cullers.push_back(makeCuller(algos[i].name, algos[i].options, error));
+        cullers.push_back(makeAppCuller(algos[i].name, algos[i].options, error));
         if (!cullers.back() || !cullers.back()->supports(scene, error)) {
             std::cerr << "gridcull bench: " << algos[i].label << ": " << error << "\n";
             return kExitFailure;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/app_cullers.h"
 #include "app/cli.h"
 #include "app/cli_args.h"
 #include "app/frame_json.h"
@@ -27,9 +28,7 @@ const char* const kCullHelp =
 }  // namespace
 
 int runCullCommand(int argc, char** argv, int first) {
-    CliArgs args(
-        withCullerOptionFlags({"algo", "frames", "out"}),
-        {"help"});
+    CliArgs args(withCullerOptionFlags({"algo", "frames", "out"}), {"help"});
     if (!args.parse(argc, argv, first)) return usageError("cull", args.error());
     if (args.has("help")) {
         std::printf("%s%s", kCullHelp, kCullerOptionsHelp);
@@ -39,7 +38,8 @@ int runCullCommand(int argc, char** argv, int first) {
     if (!args.has("algo")) return usageError("cull", "--algo is required");
     std::vector<std::string> algos;
     std::string error;
-    if (!splitAlgorithms(args.text("algo", ""), algos, error)) return usageError("cull", error);
+    if (!splitAlgorithms(args.text("algo", ""), algos, error, appCullerNames()))
+        return usageError("cull", error);
     if (algos.size() != 1) return usageError("cull", "--algo takes one algorithm here");
     CullerOptions options;
     long long frames = -1;
@@ -50,7 +50,7 @@ int runCullCommand(int argc, char** argv, int first) {
     if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
     if (frames < 0) frames = scene.frames;
 
-    std::unique_ptr<Culler> culler = makeCuller(algos[0], options, error);
+    std::unique_ptr<Culler> culler = makeAppCuller(algos[0], options, error);
     if (!culler) {
         std::cerr << "gridcull cull: " << error << "\n";
         return kExitFailure;

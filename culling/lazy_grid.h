@@ -172,8 +172,8 @@ private:
     // into it (counted, and traced as CellTouchKind::Probability).
     bool ratedFreeByProbability(int index, CellRole role, std::vector<CellTouch>* trace);
     // Pixel queries. Each counts one query and the pixels it reads.
-    long long queryFree(const PixelRect& rect);         // free pixels (occlusion buffer)
-    double queryFar(const PixelRect& rect);             // farthest depth (z-buffer)
+    long long queryFree(const PixelRect& rect);  // free pixels (occlusion buffer)
+    double queryFar(const PixelRect& rect);      // farthest depth (z-buffer)
     // Reads a whole cell and sets its state (or zfar) exactly.
     void updateCell(int index);
 

@@ -43,10 +43,7 @@ void LazyGridCuller::imageSize(const CullerOptions& options, double aspect, int&
 
 void LazyGridCuller::reset(const Scene& scene) {
     bvh_.build(scene, 0.0);
-    size_t mesh_vertices = 0;
-    for (const SceneObject& object : scene.objects)
-        if (object.mesh) mesh_vertices = std::max(mesh_vertices, object.mesh->vertices.size());
-    target_->reserveMeshVertices(mesh_vertices);
+    target_->prepare(scene);
     test_list_.clear();
     draw_list_.clear();
     test_list_.reserve(bvh_.nodes().size());
@@ -93,6 +90,7 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
         else
             traverseFig4(scene, camera, t, out);
     }
+    target_->end();
     std::sort(out.pvs.begin(), out.pvs.end());
 
     const LazyGridCounters& c = grid_.counters();

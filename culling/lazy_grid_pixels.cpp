@@ -20,6 +20,13 @@ double LazyGridBuffers::farthestDepth(const PixelRect& rect) const {
     return farthest;
 }
 
+void SoftwareLazyGridTarget::prepare(const Scene& scene) {
+    size_t vertices = 0;
+    for (const SceneObject& object : scene.objects)
+        if (object.mesh) vertices = std::max(vertices, object.mesh->vertices.size());
+    zbuffer_.reserveMeshVertices(vertices);
+}
+
 void SoftwareLazyGridTarget::begin(const Camera& camera, int width, int height,
                                    bool occlusion_bits) {
     zbuffer_.resize(width, height);

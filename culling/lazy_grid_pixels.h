@@ -55,8 +55,12 @@ public:
     // that cannot tell which pixels it wrote.
     virtual bool draw(const SceneObject& object, int index, const glm::dvec3& shift,
                       const PixelRect& image_area, PixelRect& written) = 0;
-    // Room for meshes of up to `vertices` vertices, so that draw never allocates.
-    virtual void reserveMeshVertices(size_t vertices) { (void)vertices; }
+    // Called by reset() with the scene to come: size what draw needs for its
+    // meshes, so that draw never allocates.
+    virtual void prepare(const Scene& scene) = 0;
+    // The frame's last call: a target that queues work finishes it here, so that
+    // the frame's time includes it.
+    virtual void end() {}
 };
 
 class SoftwareLazyGridTarget final : public LazyGridTarget {
@@ -68,7 +72,7 @@ public:
     double farthestDepth(const PixelRect& rect) const override {
         return pixels_.farthestDepth(rect);
     }
-    void reserveMeshVertices(size_t vertices) override { zbuffer_.reserveMeshVertices(vertices); }
+    void prepare(const Scene& scene) override;
 
 private:
     OracleIdBuffer zbuffer_;

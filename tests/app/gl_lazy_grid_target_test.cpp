@@ -1,0 +1,117 @@
+// The lazy occlusion grid on OpenGL (app/gl_lazy_grid_target.h, the -gl
+// algorithms of app/app_cullers.h): the same culling as the software target on a
+// scene whose answer is plain, and the read-back queries themselves. Needs a GL
+// context (the test run provides an X display, under xvfb-run when headless).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/app_cullers.h"
+#include "app/gl_lazy_grid_target.h"
+#include "culling/lazy_grid_screen.h"
+
+namespace gridcull {
+namespace {
+
+SceneObject sphereAt(int id, const glm::dvec3& c, double r) {
+    SceneObject o;
+    o.id = id;
+    o.shape = ShapeKind::Sphere;
+    o.center = c;
+    o.radius = r;
+    o.anchor = c;
+    o.bounds = {c - glm::dvec3(r), c + glm::dvec3(r)};
+    return o;
+}
+
+SceneObject boxAt(int id, const glm::dvec3& lo, const glm::dvec3& hi) {
+    SceneObject o;
+    o.id = id;
+    o.shape = ShapeKind::Box;
+    o.box = {lo, hi};
+    o.bounds = o.box;
+    o.anchor = o.box.center();
+    return o;
+}
+
+// The wall of tests/culling/lazy_grid_traversal_test.cpp: five spheres hidden
+// behind it, one peeking over its top edge, one beside it.
+Scene wallScene() {
+    Scene scene;
+    scene.dimensions = 3;
+    scene.grid.dimensions = 3;
+    scene.grid.world = {{0, 0, 0}, {100, 100, 100}};
+    scene.grid.resolution = {10, 10, 10};
+    scene.camera.fov_deg = 60.0;
+    scene.camera.path = {CameraKey{0.0, {50, 20, 0}, {50, 20, 100}, {0, 1, 0}}};
+    scene.objects.push_back(boxAt(1, {30, 0, 30}, {70, 30, 31}));
+    for (int k = 0; k < 5; ++k)
+        scene.objects.push_back(sphereAt(10 + k, {35 + 7.5 * k, 15, 60}, 3));
+    scene.objects.push_back(sphereAt(20, {50, 38, 60}, 3.2));
+    scene.objects.push_back(sphereAt(21, {100, 15, 60}, 3));
+    scene.finalize();
+    return scene;
+}
+
+TEST(GlLazyGrid, CullsWhatTheWallHidesLikeTheSoftwareTarget) {
+    const Scene scene = wallScene();
+    CullerOptions options;
+    options.oracle_resolution = 320;
+    for (const char* name :
+         {"lazy-grid-gl", "lazy-grid-z-gl", "busy-grid-gl", "busy-grid-tight-gl"}) {
+        std::string error;
+        auto culler = makeAppCuller(name, options, error);
+        ASSERT_TRUE(culler) << name << ": " << error;
+        EXPECT_EQ(std::string(culler->name()), name);
+        culler->reset(scene);
+        FrameResult result;
+        culler->cull(scene, cameraAt(scene, 0.0), 0.0, result);
+        EXPECT_EQ(result.pvs, (std::vector<int>{1, 20, 21})) << name;
+        EXPECT_GT(result.stats.get(Counter::PixelQueries), 0) << name;
+    }
+}
+
+TEST(GlLazyGrid, ReadBackQueriesSeeWhatWasDrawn) {
+    std::string error;
+    ASSERT_TRUE(makeAppCuller("lazy-grid-gl", {}, error)) << error;  // the context
+    GlLazyGridTarget target;
+    ASSERT_TRUE(target.init(error)) << error;
+    Camera camera;
+    camera.position = {0, 0, 0};
+    camera.target = {0, 0, 1};
+    camera.fov_deg = 90.0;
+    camera.aspect = 2.0;
+    camera.near = 0.5;
+    camera.far = 100.0;
+    Scene empty;
+    target.prepare(empty);
+    target.begin(camera, 64, 32, true);
+    const PixelRect all{0, 0, 63, 31};
+    EXPECT_EQ(target.countFree(all), 64 * 32);
+    EXPECT_TRUE(std::isinf(target.farthestDepth(all)));
+    // A wall at depth 10 across the image's left half (world +x is the image's left).
+    const SceneObject wall = boxAt(0, {0, -50, 10}, {50, 50, 11});
+    ScreenMapping mapping;
+    mapping.set(camera, 64, 32);
+    PixelRect written;
+    ASSERT_TRUE(target.draw(wall, 0, {0, 0, 0}, mapping.project(wall.box).rect, written));
+    target.end();
+    EXPECT_EQ(target.countFree({0, 0, 30, 31}), 0);
+    EXPECT_EQ(target.countFree({33, 0, 63, 31}), 31 * 32);
+    const double depth = target.farthestDepth({0, 0, 30, 31});
+    EXPECT_GE(depth, 10.0);  // never nearer than drawn
+    EXPECT_LT(depth, 10.05);
+}
+
+TEST(GlLazyGrid, BenchAndCullKnowTheGlNamesTheWindowDoesNot) {
+    const std::vector<std::string> all = appCullerNames();
+    const std::vector<std::string> core = cullerNames();
+    EXPECT_EQ(all.size(), core.size() + 4);
+    EXPECT_NE(std::find(all.begin(), all.end(), "busy-grid-gl"), all.end());
+    EXPECT_EQ(std::find(core.begin(), core.end(), "busy-grid-gl"), core.end());
+}
+
+}  // namespace
+}  // namespace gridcull
