@@ -11,46 +11,20 @@
 #include "app/app_cullers.h"
 #include "app/gl_lazy_grid_target.h"
 #include "culling/lazy_grid_screen.h"
+#include "tests/culling/oracle_test_scenes.h"
 
 namespace gridcull {
 namespace {
 
-SceneObject sphereAt(int id, const glm::dvec3& c, double r) {
-    SceneObject o;
-    o.id = id;
-    o.shape = ShapeKind::Sphere;
-    o.center = c;
-    o.radius = r;
-    o.anchor = c;
-    o.bounds = {c - glm::dvec3(r), c + glm::dvec3(r)};
-    return o;
-}
-
-SceneObject boxAt(int id, const glm::dvec3& lo, const glm::dvec3& hi) {
-    SceneObject o;
-    o.id = id;
-    o.shape = ShapeKind::Box;
-    o.box = {lo, hi};
-    o.bounds = o.box;
-    o.anchor = o.box.center();
-    return o;
-}
-
 // The wall of tests/culling/lazy_grid_traversal_test.cpp: five spheres hidden
 // behind it, one peeking over its top edge, one beside it.
 Scene wallScene() {
-    Scene scene;
-    scene.dimensions = 3;
-    scene.grid.dimensions = 3;
-    scene.grid.world = {{0, 0, 0}, {100, 100, 100}};
-    scene.grid.resolution = {10, 10, 10};
-    scene.camera.fov_deg = 60.0;
-    scene.camera.path = {CameraKey{0.0, {50, 20, 0}, {50, 20, 100}, {0, 1, 0}}};
-    scene.objects.push_back(boxAt(1, {30, 0, 30}, {70, 30, 31}));
-    for (int k = 0; k < 5; ++k)
-        scene.objects.push_back(sphereAt(10 + k, {35 + 7.5 * k, 15, 60}, 3));
-    scene.objects.push_back(sphereAt(20, {50, 38, 60}, 3.2));
-    scene.objects.push_back(sphereAt(21, {100, 15, 60}, 3));
+    Scene scene = test::scene3d();
+    test::setCamera(scene, {50, 20, 0}, {50, 20, 100}, 60.0);
+    test::addBox(scene, 1, {30, 0, 30}, {70, 30, 31});
+    for (int k = 0; k < 5; ++k) test::addSphere(scene, 10 + k, {35 + 7.5 * k, 15, 60}, 3);
+    test::addSphere(scene, 20, {50, 38, 60}, 3.2);
+    test::addSphere(scene, 21, {100, 15, 60}, 3);
     scene.finalize();
     return scene;
 }
@@ -92,7 +66,9 @@ TEST(GlLazyGrid, ReadBackQueriesSeeWhatWasDrawn) {
     EXPECT_EQ(target.countFree(all), 64 * 32);
     EXPECT_TRUE(std::isinf(target.farthestDepth(all)));
     // A wall at depth 10 across the image's left half (world +x is the image's left).
-    const SceneObject wall = boxAt(0, {0, -50, 10}, {50, 50, 11});
+    Scene scene = test::scene3d();
+    test::addBox(scene, 0, {0, -50, 10}, {50, 50, 11});
+    const SceneObject& wall = scene.objects[0];
     ScreenMapping mapping;
     mapping.set(camera, 64, 32);
     PixelRect written;
