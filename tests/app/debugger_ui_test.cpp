@@ -10,6 +10,7 @@
 
 #include "app/debugger_session.h"
 #include "culling/scene_loader.h"
+#include "tests/app/session_frame_snapshot.h"
 
 namespace gridcull {
 namespace {
@@ -55,18 +56,8 @@ TEST_F(HeadlessImGui, PanelsAskForNothingWithoutInput) {
     const std::vector<std::string> names = cullerNames();
     const std::string file;
     const std::vector<std::string> errors = {"x.json: objects[0].radius: must be > 0"};
-    FrameSnapshot snapshot;
-    snapshot.scene = &session.scene();
-    snapshot.frame = session.frame();
-    snapshot.t = session.t();
-    snapshot.algo_names = &names;
+    FrameSnapshot snapshot = test::snapshotOfSession(session, names, file, errors);
     snapshot.algo_index = 1;
-    snapshot.result = &session.result();
-    snapshot.exact = &session.exactResult();
-    snapshot.false_culled = &session.falseCulled();
-    snapshot.history = &session.history();
-    snapshot.scene_file = &file;
-    snapshot.scene_errors = &errors;
     snapshot.hover.id = session.scene().objects[0].id;
 
     UiState state;

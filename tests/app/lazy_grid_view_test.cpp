@@ -15,6 +15,7 @@
 #include "app/lazy_grid_overlay.h"
 #include "culling/lazy_grid_culler.h"
 #include "culling/scene_loader.h"
+#include "tests/app/session_frame_snapshot.h"
 #include "ui/debugger_ui.h"
 #include "ui/lazy_grid_panel.h"
 
@@ -240,17 +241,9 @@ protected:
         int w = 0, h = 0;
         io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
         names_ = cullerNames();
-        snapshot_.scene = &session_.scene();
-        snapshot_.frame = session_.frame();
-        snapshot_.algo_names = &names_;
+        snapshot_ = test::snapshotOfSession(session_, names_, file_, errors_);
         snapshot_.algo_index =
             int(std::find(names_.begin(), names_.end(), "lazy-grid") - names_.begin());
-        snapshot_.result = &session_.result();
-        snapshot_.exact = &session_.exactResult();
-        snapshot_.false_culled = &session_.falseCulled();
-        snapshot_.history = &session_.history();
-        snapshot_.scene_file = &file_;
-        snapshot_.scene_errors = &errors_;
         snapshot_.lazy_grid = snap_;
         snapshot_.lazy_object = occludedAfterQuery();
         snapshot_.lazy_object_pinned = true;

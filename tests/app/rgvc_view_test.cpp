@@ -11,6 +11,7 @@
 #include "app/debugger_session.h"
 #include "app/rgvc_overlay.h"
 #include "culling/scene_loader.h"
+#include "tests/app/session_frame_snapshot.h"
 #include "ui/debugger_ui.h"
 #include "ui/rgvc_view.h"
 
@@ -155,16 +156,7 @@ TEST_F(RgvcViewTest, PanelDrawsHeadlessAndAsksForNothing) {
     const std::vector<std::string> errors;
     RgvcVoxelInfo voxel;
     describeRgvcVoxel(*snap_, session_.scene(), snap_->visits.back().voxel, voxel);
-    FrameSnapshot snapshot;
-    snapshot.scene = &session_.scene();
-    snapshot.frame = session_.frame();
-    snapshot.algo_names = &names;
-    snapshot.result = &session_.result();
-    snapshot.exact = &session_.exactResult();
-    snapshot.false_culled = &session_.falseCulled();
-    snapshot.history = &session_.history();
-    snapshot.scene_file = &file;
-    snapshot.scene_errors = &errors;
+    FrameSnapshot snapshot = test::snapshotOfSession(session_, names, file, errors);
     snapshot.rgvc = snap_;
     snapshot.rgvc_view.layer = snap_->first_layer + 2;
     snapshot.rgvc_view.occluder = 0;
