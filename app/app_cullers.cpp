@@ -1,8 +1,8 @@
 #include "app/app_cullers.h"
 
 #include "app/gl_context.h"
-#include "app/gl_lazy_grid_target.h"
-#include "culling/lazy_grid_culler.h"
+#include "app/gl_image_target.h"
+#include "culling/lazy_grid/lazy_grid_culler.h"
 
 namespace gridcull {
 
@@ -48,7 +48,7 @@ std::unique_ptr<Culler> makeAppCuller(std::string_view name, const CullerOptions
     for (const GlCullerKind& kind : kGlCullers) {
         if (name != kind.name) continue;
         if (!ensureGlContext(error)) return nullptr;
-        auto target = std::make_unique<GlLazyGridTarget>();
+        auto target = std::make_unique<GlImageTarget>();
         if (!target->init(error)) return nullptr;
         return std::make_unique<LazyGridCuller>(kind.variant, kind.update, options,
                                                 std::move(target), kind.name);

@@ -1,7 +1,7 @@
 // The algorithms the executable offers: every culler of culling/ (cullerNames)
 // plus those only the app can make because they need OpenGL: the lazy occlusion
 // grids drawing with OpenGL and reading the depth buffer back per pixel-level
-// query (app/gl_lazy_grid_target.h), named like their software twins with "-gl".
+// query (app/gl_image_target.h), named like their software twins with "-gl".
 // The first -gl culler made opens a hidden GLFW window for its context (so it
 // needs an X display: run bench under xvfb-run on a headless machine), which
 // lives until the program ends. Meant for `bench`; the window does not offer them.
@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "culling/culler.h"
+#include "culling/api/culler.h"
 
 namespace gridcull {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "culling/cull_stats.h"
+#include "culling/api/cull_stats.h"
 
 namespace gridcull {
 

@@ -1,6 +1,6 @@
 // Where the culling camera's image lies in a view that looks through the culling
 // camera (ViewMode::CullingCamera). That image is the one the exact oracle's ID
-// buffer and the lazy occlusion grid sample (culling/lazy_grid_screen.h):
+// buffer and the lazy occlusion grid sample (culling/raster/screen_mapping.h):
 // image_width x image_height pixels over exactly the camera's frustum, pixel
 // (0, 0) at the top left, so a pixel of it maps linearly onto the view.
 //

@@ -8,8 +8,8 @@
 #include "app/app_cullers.h"
 #include "app/cli_args.h"
 #include "app/window.h"
-#include "culling/exact_oracle.h"
-#include "culling/scene_loader.h"
+#include "culling/oracle/exact_oracle.h"
+#include "culling/io/scene_loader.h"
 
 namespace gridcull {
 

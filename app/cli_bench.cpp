@@ -13,7 +13,7 @@
 #include "app/cli.h"
 #include "app/cli_args.h"
 #include "app/output_file.h"
-#include "culling/object_triangles.h"
+#include "culling/scene/object_triangles.h"
 
 namespace gridcull {
 
@@ -27,7 +27,7 @@ const char* const kBenchHelp =
     "percentile cull time per frame (each frame's median over runs), the ratio to the\n"
     "first algorithm listed, the mean PVS size, the mean exact visible count, PVS/exact,\n"
     "the false culls (ids the exact oracle sees that the PVS lacks) and the frames\n"
-    "that had any, the mean triangles of the PVS (culling/object_triangles.h), and\n"
+    "that had any, the mean triangles of the PVS (culling/scene/object_triangles.h), and\n"
     "each algorithm's counters per frame.\n"
     "An --algo entry may set culler options for itself: NAME:FLAG=VALUE[:FLAG=VALUE],\n"
     "e.g. lazy-grid:cell-size=8,lazy-grid:cell-size=64 times two cell sizes side by side.\n"

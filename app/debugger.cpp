@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "app/hover_pick.h"
-#include "culling/ray_pick.h"
-#include "culling/scene_loader.h"
+#include "culling/scene/ray_pick.h"
+#include "culling/io/scene_loader.h"
 
 namespace gridcull {
 

@@ -4,8 +4,8 @@
 #include <cassert>
 
 #include "app/object_states.h"
-#include "culling/lazy_grid_culler.h"
-#include "culling/rgvc_culler.h"
+#include "culling/lazy_grid/lazy_grid_culler.h"
+#include "culling/rgvc/rgvc_culler.h"
 
 namespace gridcull {
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "culling/camera.h"
-#include "culling/culler.h"
-#include "culling/lazy_grid_snapshot.h"
-#include "culling/rgvc_snapshot.h"
-#include "culling/scene.h"
+#include "culling/scene/camera.h"
+#include "culling/api/culler.h"
+#include "culling/lazy_grid/lazy_grid_snapshot.h"
+#include "culling/rgvc/rgvc_snapshot.h"
+#include "culling/scene/scene.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
 

@@ -5,8 +5,8 @@
 #pragma once
 #include <string>
 
-#include "culling/camera.h"
-#include "culling/culler.h"
+#include "culling/scene/camera.h"
+#include "culling/api/culler.h"
 
 namespace gridcull {
 

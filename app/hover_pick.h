@@ -1,11 +1,11 @@
-// Which object is under the mouse: a ray pick in 3D (culling/ray_pick.h, the same
+// Which object is under the mouse: a ray pick in 3D (culling/scene/ray_pick.h, the same
 // intersections the oracle uses) and a point-in-shape test in 2D.
 #pragma once
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "culling/scene.h"
+#include "culling/scene/scene.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
 

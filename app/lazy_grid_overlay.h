@@ -1,10 +1,10 @@
-// Draws the lazy occlusion grid (culling/lazy_grid_snapshot.h) over the view
+// Draws the lazy occlusion grid (culling/lazy_grid/lazy_grid_snapshot.h) over the view
 // through the culling camera: every cell filled by its state at the end of the
 // frame, the grid lines and the image's border, and for the focused object (the
 // one under the mouse, or `shot --lazy-object`) the cells its deciding test
 // touched (internal cells filled and outlined solid, border cells dashed, those
 // found free in the "free" colour), a cross on each cell whose pixels it read,
-// and its screen rectangle. Colours and toggles: ui/lazy_grid_view.h.
+// and its screen rectangle. Colours and toggles: ui/lazy_grid/lazy_grid_view.h.
 //
 // Geometry is in view pixels (origin top left) through an ImageFrame
 // (app/camera_image_frame.h), so the grid sits on the objects whatever the
@@ -18,8 +18,8 @@
 #include "app/camera_image_frame.h"
 #include "app/line_renderer.h"
 #include "app/overlay_geometry.h"
-#include "culling/lazy_grid_snapshot.h"
-#include "ui/lazy_grid_view.h"
+#include "culling/lazy_grid/lazy_grid_snapshot.h"
+#include "ui/lazy_grid/lazy_grid_view.h"
 
 namespace gridcull {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "culling/scene.h"
+#include "culling/scene/scene.h"
 #include "ui/object_state.h"
 
 namespace gridcull {

@@ -8,8 +8,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "culling/camera.h"
-#include "culling/scene.h"
+#include "culling/scene/camera.h"
+#include "culling/scene/scene.h"
 #include "grid/aabb.h"
 #include "ui/object_state.h"
 

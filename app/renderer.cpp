@@ -183,7 +183,7 @@ void Renderer::setScene(const Scene& scene) {
             break;
         }
         case ShapeKind::Polygon:
-            // The loader only accepts simple polygons (culling/polygon2d.h), for
+            // The loader only accepts simple polygons (culling/scene/polygon2d.h), for
             // which ear clipping always completes.
             group = range([&] { appendPolygon(object, soup); }, false);
             break;

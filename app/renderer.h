@@ -27,8 +27,8 @@
 #include "app/line_renderer.h"
 #include "app/rgvc_overlay.h"
 #include "app/view_camera.h"
-#include "culling/camera.h"
-#include "culling/scene.h"
+#include "culling/scene/camera.h"
+#include "culling/scene/scene.h"
 #include "ui/layout.h"
 #include "ui/object_state.h"
 

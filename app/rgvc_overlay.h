@@ -1,8 +1,8 @@
-// Draws the state of regular-grid culling (culling/rgvc_snapshot.h) over the 2D
+// Draws the state of regular-grid culling (culling/rgvc/rgvc_snapshot.h) over the 2D
 // view, like Figure 1 of Batagelo & Wu: H as a light veil, O dark, T and I voxels
 // marked, the traversal up to a chess layer with that layer and its seed voxel
 // highlighted, the line of sight, and a picked extended occluder's extension
-// steps and occlusion polygons. Colours and toggles: ui/rgvc_view.h.
+// steps and occlusion polygons. Colours and toggles: ui/rgvc/rgvc_view.h.
 // O, H, I and T are drawn as they stand at the end of the frame (the snapshot
 // keeps no history of them): the layer stepper limits the traversal shown only.
 //
@@ -19,8 +19,8 @@
 
 #include "app/line_renderer.h"
 #include "app/overlay_geometry.h"
-#include "culling/rgvc_snapshot.h"
-#include "ui/rgvc_view.h"
+#include "culling/rgvc/rgvc_snapshot.h"
+#include "ui/rgvc/rgvc_view.h"
 
 namespace gridcull {
 

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "culling/scene.h"
+#include "culling/scene/scene.h"
 
 namespace gridcull {
 

@@ -6,8 +6,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "culling/camera.h"
-#include "culling/scene.h"
+#include "culling/scene/camera.h"
+#include "culling/scene/scene.h"
 #include "ui/frame_snapshot.h"
 
 namespace gridcull {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string>
 
-#include "culling/culler.h"
-#include "culling/scene.h"
+#include "culling/api/culler.h"
+#include "culling/scene/scene.h"
 
 namespace gridcull {
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The lazy occlusion grid with the paper's kind of pixel-level query: objects
 # drawn with OpenGL, each query a glReadPixels of the depth buffer (Hey et al.
-# section 7; app/gl_lazy_grid_target.h). Times lazy against busy, both on OpenGL
+# section 7; app/gl_image_target.h). Times lazy against busy, both on OpenGL
 # and next to the software target, on the forest and city walkthroughs at 640,
 # and writes the tables to docs/results/lazy-grid/*-gl.txt (or $1). Renders with
 # Mesa's software OpenGL under xvfb-run when there is no display. About 8 minutes.

@@ -6,9 +6,9 @@
 #include "ui/algorithm_panel.h"
 #include "ui/frame_snapshot.h"
 #include "ui/layout.h"
-#include "ui/lazy_grid_panel.h"
+#include "ui/lazy_grid/lazy_grid_panel.h"
 #include "ui/playback_panel.h"
-#include "ui/rgvc_panel.h"
+#include "ui/rgvc/rgvc_panel.h"
 #include "ui/scene_panel.h"
 #include "ui/stats_panel.h"
 

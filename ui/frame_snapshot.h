@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "culling/culler.h"
-#include "culling/scene.h"
+#include "culling/api/culler.h"
+#include "culling/scene/scene.h"
 #include "grid/aabb.h"
-#include "ui/lazy_grid_view.h"
+#include "ui/lazy_grid/lazy_grid_view.h"
 #include "ui/object_state.h"
-#include "ui/rgvc_view.h"
+#include "ui/rgvc/rgvc_view.h"
 
 namespace gridcull {
 

@@ -13,7 +13,7 @@
 
 #include "app/lazy_grid_overlay.h"
 #include "app/view_camera.h"
-#include "culling/camera.h"
+#include "culling/scene/camera.h"
 
 namespace gridcull {
 namespace {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "culling/scene_loader.h"
+#include "culling/io/scene_loader.h"
 #include "run_command.h"
 
 namespace gridcull::test {

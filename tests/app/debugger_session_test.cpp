@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "app/object_states.h"
-#include "culling/scene_loader.h"
+#include "culling/io/scene_loader.h"
 
 namespace gridcull {
 namespace {

@@ -9,7 +9,7 @@
 #include <imgui.h>
 
 #include "app/debugger_session.h"
-#include "culling/scene_loader.h"
+#include "culling/io/scene_loader.h"
 #include "tests/app/session_frame_snapshot.h"
 
 namespace gridcull {

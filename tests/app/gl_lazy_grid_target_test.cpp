@@ -1,4 +1,4 @@
-// The lazy occlusion grid on OpenGL (app/gl_lazy_grid_target.h, the -gl
+// The lazy occlusion grid on OpenGL (app/gl_image_target.h, the -gl
 // algorithms of app/app_cullers.h): the same culling as the software target on a
 // scene whose answer is plain, and the read-back queries themselves. Needs a GL
 // context (the test run provides an X display, under xvfb-run when headless).
@@ -9,14 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "app/app_cullers.h"
-#include "app/gl_lazy_grid_target.h"
-#include "culling/lazy_grid_screen.h"
-#include "tests/culling/oracle_test_scenes.h"
+#include "app/gl_image_target.h"
+#include "culling/raster/screen_mapping.h"
+#include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull {
 namespace {
 
-// The wall of tests/culling/lazy_grid_traversal_test.cpp: five spheres hidden
+// The wall of tests/culling/lazy_grid/lazy_grid_traversal_test.cpp: five spheres hidden
 // behind it, one peeking over its top edge, one beside it.
 Scene wallScene() {
     Scene scene = test::scene3d();
@@ -50,7 +50,7 @@ TEST(GlLazyGrid, CullsWhatTheWallHidesLikeTheSoftwareTarget) {
 TEST(GlLazyGrid, ReadBackQueriesSeeWhatWasDrawn) {
     std::string error;
     ASSERT_TRUE(makeAppCuller("lazy-grid-gl", {}, error)) << error;  // the context
-    GlLazyGridTarget target;
+    GlImageTarget target;
     ASSERT_TRUE(target.init(error)) << error;
     Camera camera;
     camera.position = {0, 0, 0};

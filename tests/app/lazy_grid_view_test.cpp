@@ -1,5 +1,5 @@
 // The lazy occlusion grid in the window: the session's snapshot (app/
-// debugger_session.h), the panel's summaries (ui/lazy_grid_view.h), the overlay's
+// debugger_session.h), the panel's summaries (ui/lazy_grid/lazy_grid_view.h), the overlay's
 // geometry (app/lazy_grid_overlay.h) and the panel itself drawn headless, with
 // its cell-size slider driven by the mouse, on the forest scene.
 #include <algorithm>
@@ -13,11 +13,11 @@
 
 #include "app/debugger_session.h"
 #include "app/lazy_grid_overlay.h"
-#include "culling/lazy_grid_culler.h"
-#include "culling/scene_loader.h"
+#include "culling/lazy_grid/lazy_grid_culler.h"
+#include "culling/io/scene_loader.h"
 #include "tests/app/session_frame_snapshot.h"
 #include "ui/debugger_ui.h"
-#include "ui/lazy_grid_panel.h"
+#include "ui/lazy_grid/lazy_grid_panel.h"
 
 namespace gridcull {
 namespace {

@@ -1,5 +1,5 @@
 // The rgvc view's mapping from the culler's snapshot to what the window shows:
-// the voxel description of the panel (ui/rgvc_view.h) and the overlay geometry
+// the voxel description of the panel (ui/rgvc/rgvc_view.h) and the overlay geometry
 // (app/rgvc_overlay.h), on the Figure 1 scene run through the debugger session.
 #include <cfloat>
 #include <cmath>
@@ -10,10 +10,10 @@
 
 #include "app/debugger_session.h"
 #include "app/rgvc_overlay.h"
-#include "culling/scene_loader.h"
+#include "culling/io/scene_loader.h"
 #include "tests/app/session_frame_snapshot.h"
 #include "ui/debugger_ui.h"
-#include "ui/rgvc_view.h"
+#include "ui/rgvc/rgvc_view.h"
 
 namespace gridcull {
 namespace {

@@ -1,4 +1,4 @@
-// libFuzzer target over the OBJ mesh reader (culling/mesh_loader.h), which
+// libFuzzer target over the OBJ mesh reader (culling/io/mesh_loader.h), which
 // reads the files that scene objects and mesh_crowd generators name: any byte
 // string is handed to parseObjMesh. Properties, beyond "no crash, no sanitizer
 // report, no leak, no hang": a mesh xor an error; a mesh has triangles, every
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "culling/mesh_loader.h"
+#include "culling/io/mesh_loader.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The properties the scene-loader fuzzer checks on every input, shared with
 // the regression test that replays the inputs it found
-// (tests/culling/scene_fuzz_regression_test.cpp). Each returns "" when the
+// (tests/culling/io/scene_fuzz_regression_test.cpp). Each returns "" when the
 // property holds, else what was violated.
 //  - checkLoadResult: a scene or at least one error message, never both and
 //    never neither; every message starts with the display name; a loaded scene
@@ -22,8 +22,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "culling/culler.h"
-#include "culling/scene_loader.h"
+#include "culling/api/culler.h"
+#include "culling/io/scene_loader.h"
 
 namespace gridcull::fuzz {
 

@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "culling/scene_loader.h"
+#include "culling/io/scene_loader.h"
 #include "tests/fuzz/scene_fuzz_checks.h"
 
 namespace {

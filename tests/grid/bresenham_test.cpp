@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/seeded_random.h"
+#include "culling/scene/seeded_random.h"
 #include "grid/chess_ring.h"
 
 namespace gridcull {

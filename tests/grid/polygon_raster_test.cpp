@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/seeded_random.h"
+#include "culling/scene/seeded_random.h"
 
 namespace gridcull {
 namespace {

@@ -1,0 +1,69 @@
+// The lazy occlusion grid drawing with OpenGL and answering its pixel-level
+// queries with glReadPixels of the depth buffer, as Hey et al. section 7 did
+// ("reading the hardware z-buffer ... with the glReadPixels function"): the
+// `-gl` algorithms of app/app_cullers.h, for `gridcull bench`, so that a query
+// costs what it cost in the paper, a round trip to the GPU.
+//
+// Objects are drawn depth-only into a width x height framebuffer object with
+// the culling camera's view and projection (Camera::viewMatrix,
+// projectionMatrix): spheres as a 32 x 16 latitude-longitude mesh, boxes as
+// cubes, meshes as they are. A draw cannot tell which pixels it wrote, so it
+// reports its box's rectangle (the paper's "image area"). countFree counts
+// depth 1.0 (the cleared value) in the rectangle; farthestDepth returns the
+// largest depth, turned back into view-space distance, +infinity if any pixel is
+// empty. Rows are flipped (GL counts them from the bottom).
+//
+// Not the oracle's rasterization: OpenGL rasterizes in 32-bit floats with its
+// own edge rule, spheres are facetted and depths 24-bit, so the exact oracle at
+// the same resolution can see an object past an occluder's silhouette that this
+// target's image hides. bench reports such false culls; the
+// conservative guarantee of culling/lazy_grid/lazy_grid_culler.h is for the software
+// target. Needs a current OpenGL 3.3 core context for its whole life.
+#pragma once
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "app/gl_objects.h"
+#include "app/offscreen_target.h"
+#include "culling/raster/image_target.h"
+
+namespace gridcull {
+
+class GlImageTarget final : public ImageTarget {
+public:
+    // Compiles the shader and uploads the unit sphere and cube.
+    bool init(std::string& error);
+    void prepare(const Scene& scene) override;
+    void begin(const Camera& camera, int width, int height, bool occlusion_bits) override;
+    bool draw(const SceneObject& object, int index, const glm::dvec3& shift,
+              const PixelRect& image_area, PixelRect& written) override;
+    long long countFree(const PixelRect& rect) const override;
+    double farthestDepth(const PixelRect& rect) const override;
+    void end() override;
+
+private:
+    struct Mesh {
+        GlVertexArray vao;
+        GlBuffer vertices, indices;
+        int index_count = 0;
+    };
+    Mesh upload(const std::vector<float>& positions, const std::vector<uint32_t>& indices);
+    // Reads `rect`'s depths into depth_ (row-major, any order) and returns their count.
+    size_t readDepths(const PixelRect& rect) const;
+    void drawMesh(const Mesh& mesh, const glm::mat4& model);
+
+    GlProgram program_;
+    GLint mvp_location_ = -1;
+    Mesh sphere_, cube_;
+    std::unordered_map<const TriangleMesh*, Mesh> meshes_;
+    OffscreenTarget framebuffer_;
+    glm::mat4 view_projection_{1.0f};
+    double near_ = 0.1, far_ = 1000.0;
+    int height_ = 0;
+    mutable std::vector<float> depth_;
+};
+
+}  // namespace gridcull

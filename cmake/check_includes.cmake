@@ -1,0 +1,38 @@
+# Run by gridcull_module() at build time (cmake -P): every `#include "a/b/c.h"`
+# in FILES must name a file under ROOT whose folder is one of ALLOWED (or below
+# one). Includes without a folder (system headers in quotes) are not checked.
+# On success writes STAMP; otherwise lists each offending line and fails.
+set(problems "")
+foreach(file IN LISTS FILES)
+  if(NOT file)
+    continue()
+  endif()
+  file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"[^\"]+\"")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT included MATCHES "/")
+      continue()
+    endif()
+    if(NOT EXISTS ${ROOT}/${included})
+      continue()  # not a project file (a library's header found elsewhere)
+    endif()
+    get_filename_component(folder ${included} DIRECTORY)
+    set(ok FALSE)
+    foreach(dir IN LISTS ALLOWED)
+      if(folder STREQUAL dir OR folder MATCHES "^${dir}/")
+        set(ok TRUE)
+      endif()
+    endforeach()
+    if(NOT ok)
+      file(RELATIVE_PATH relative ${ROOT} ${file})
+      string(APPEND problems "  ${relative}: #include \"${included}\"\n")
+    endif()
+  endforeach()
+endforeach()
+if(problems)
+  string(REPLACE ";" ", " allowed_text "${ALLOWED}")
+  message(FATAL_ERROR "${MODULE} includes from folders it does not depend on:\n${problems}"
+                      "It may include from: ${allowed_text}.\n"
+                      "Depend on the module in its gridcull_module() call, or move the code.")
+endif()
+file(WRITE ${STAMP} "ok\n")

@@ -1,0 +1,172 @@
+// The `rooms` generator after Sudarsky & Gotsman's test scene: a building of
+// square rooms joined by doors, a table per room and chairs circling the tables
+// (layout and sizes in scene_generators.h).
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec2.hpp>
+
+#include "culling/generators/scene_generators.h"
+#include "culling/scene/scene_limits.h"
+#include "culling/scene/seeded_random.h"
+
+namespace gridcull {
+
+namespace {
+
+// Floor-plan axes: x and z in 3D (y is up), x and y in 2D.
+struct Plan {
+    int a = 0, b = 2;
+    bool is_3d = true;
+    double ground = 0.0;
+
+    // A box over [a0, a1] x [b0, b1] on the floor plan, `height` tall in 3D.
+    Aabb box(double a0, double a1, double b0, double b1, double height) const {
+        Aabb r;
+        r.min[a] = a0;
+        r.max[a] = a1;
+        r.min[b] = b0;
+        r.max[b] = b1;
+        if (is_3d) {
+            r.min.y = ground;
+            r.max.y = ground + height;
+        }
+        return r;
+    }
+};
+
+struct RoomsEmitter {
+    Scene& scene;
+    int& next_id;
+    void add(SceneObject o) {
+        o.id = next_id++;
+        computeAnchorAndBounds(o, scene.dimensions);
+        scene.objects.push_back(std::move(o));
+    }
+    void addBox(const Aabb& box) {
+        SceneObject o;
+        o.shape = ShapeKind::Box;
+        o.box = box;
+        add(std::move(o));
+    }
+};
+
+// A point on the square loop of half-size `half` around `centre`, at arc
+// length `u` (any real; the loop has length 8 * half) counter-clockwise from
+// the corner (-half, -half).
+glm::dvec2 onLoop(const glm::dvec2& centre, double half, double u) {
+    const double side = 2.0 * half;
+    double w = std::fmod(u, 4.0 * side);
+    if (w < 0.0) w += 4.0 * side;
+    const int k = std::min(3, int(w / side));
+    const double f = w - double(k) * side;
+    switch (k) {
+    case 0: return centre + glm::dvec2(-half + f, -half);
+    case 1: return centre + glm::dvec2(half, -half + f);
+    case 2: return centre + glm::dvec2(half - f, half);
+    default: return centre + glm::dvec2(-half, half - f);
+    }
+}
+
+}  // namespace
+
+void generateRooms(const RoomsParams& p, SeededRandom& rng, Scene& scene, int& next_id) {
+    const Aabb& world = scene.grid.world;
+    Plan plan;
+    plan.is_3d = scene.dimensions == 3;
+    plan.b = plan.is_3d ? 2 : 1;
+    plan.ground = world.min.y;
+    RoomsEmitter out{scene, next_id};
+    const double s = p.room_size, t = p.wall_thickness, door = p.door_width;
+    const double wall_height = 0.3 * s;
+    const double a0 = world.center()[plan.a] - double(p.rooms_x) * s * 0.5;
+    const double b0 = world.center()[plan.b] - double(p.rooms_z) * s * 0.5;
+
+    // Walls on lines of constant a (running along b), then of constant b. A wall
+    // between two rooms has a door in the middle; outer walls are closed.
+    for (int64_t i = 0; i <= p.rooms_x; ++i) {
+        const double at = a0 + double(i) * s;
+        const bool inner = i > 0 && i < p.rooms_x;
+        for (int64_t j = 0; j < p.rooms_z; ++j) {
+            const double start = b0 + double(j) * s - t * 0.5, end = start + s + t;
+            const double mid = b0 + (double(j) + 0.5) * s;
+            if (inner) {
+                out.addBox(plan.box(at - t * 0.5, at + t * 0.5, start, mid - door * 0.5, wall_height));
+                out.addBox(plan.box(at - t * 0.5, at + t * 0.5, mid + door * 0.5, end, wall_height));
+            } else {
+                out.addBox(plan.box(at - t * 0.5, at + t * 0.5, start, end, wall_height));
+            }
+        }
+    }
+    for (int64_t j = 0; j <= p.rooms_z; ++j) {
+        const double at = b0 + double(j) * s;
+        const bool inner = j > 0 && j < p.rooms_z;
+        for (int64_t i = 0; i < p.rooms_x; ++i) {
+            const double start = a0 + double(i) * s - t * 0.5, end = start + s + t;
+            const double mid = a0 + (double(i) + 0.5) * s;
+            if (inner) {
+                out.addBox(plan.box(start, mid - door * 0.5, at - t * 0.5, at + t * 0.5, wall_height));
+                out.addBox(plan.box(mid + door * 0.5, end, at - t * 0.5, at + t * 0.5, wall_height));
+            } else {
+                out.addBox(plan.box(start, end, at - t * 0.5, at + t * 0.5, wall_height));
+            }
+        }
+    }
+
+    // Chairs circle the table halfway between its edge and the walls' inner
+    // faces; with wall_thickness < room_size / 2 they touch neither.
+    const double table_half = 0.15 * s, chair_half = 0.025 * s, chair_height = 0.1 * s;
+    const double loop_half = (table_half + 0.5 * s - 0.5 * t) * 0.5;
+    const double duration = scene.frames * scene.dt;
+    const int64_t chairs = p.rooms_x * p.rooms_z * p.chairs_per_room;
+    const int64_t max_keys = std::clamp<int64_t>(
+        chairs > 0 ? kMaxRandomSegments / chairs : kMaxChairKeys, 2, kMaxChairKeys);
+    for (int64_t j = 0; j < p.rooms_z; ++j) {
+        for (int64_t i = 0; i < p.rooms_x; ++i) {
+            const glm::dvec2 centre{a0 + (double(i) + 0.5) * s, b0 + (double(j) + 0.5) * s};
+            out.addBox(plan.box(centre.x - table_half, centre.x + table_half,
+                                centre.y - table_half, centre.y + table_half, 0.075 * s));
+            for (int64_t k = 0; k < p.chairs_per_room; ++k) {
+                const double u0 = rng.uniform(0.0, 8.0 * loop_half);
+                const double direction = rng.uniform() < 0.5 ? -1.0 : 1.0;
+                const glm::dvec2 start = onLoop(centre, loop_half, u0);
+                SceneObject chair;
+                chair.shape = ShapeKind::Box;
+                chair.box = plan.box(start.x - chair_half, start.x + chair_half,
+                                     start.y - chair_half, start.y + chair_half, chair_height);
+                if (p.chair_speed > 0.0) {
+                    // Keys at the start and at every corner the chair passes, until
+                    // the scene ends or the key budget is spent.
+                    chair.motion.kind = MotionKind::Keyframes;
+                    const double anchor_height = plan.is_3d ? plan.ground + 0.5 * chair_height : 0.0;
+                    auto key = [&](double time, double u) {
+                        const glm::dvec2 q = onLoop(centre, loop_half, u);
+                        PositionKey pk;
+                        pk.t = time;
+                        pk.position[plan.a] = q.x;
+                        pk.position[plan.b] = q.y;
+                        if (plan.is_3d) pk.position.y = anchor_height;
+                        chair.motion.keys.push_back(pk);
+                    };
+                    key(0.0, u0);
+                    const double side = 2.0 * loop_half;
+                    double corner = direction > 0.0 ? (std::floor(u0 / side) + 1.0) * side
+                                                    : std::ceil(u0 / side - 1.0) * side;
+                    double time = std::abs(corner - u0) / p.chair_speed;
+                    while (int64_t(chair.motion.keys.size()) < max_keys) {
+                        if (time > 0.0) key(time, corner);
+                        if (time >= duration) break;
+                        corner += direction * side;
+                        const double next = time + side / p.chair_speed;
+                        if (!(next > time)) break;  // keys must stay strictly increasing
+                        time = next;
+                    }
+                    chair.motion.max_speed = keyframeSpeed(chair.motion.keys);
+                }
+                out.add(std::move(chair));
+            }
+        }
+    }
+}
+
+}  // namespace gridcull

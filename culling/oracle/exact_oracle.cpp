@@ -1,0 +1,149 @@
+#include "culling/oracle/exact_oracle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridcull {
+
+ExactOracle::ExactOracle(const CullerOptions& options) : options_(options) {
+    options_.oracle_resolution = std::clamp(options_.oracle_resolution, 1, kMaxOracleResolution);
+    options_.oracle_rays_per_turn =
+        std::clamp(options_.oracle_rays_per_turn, 1, kMaxOracleRaysPerTurn);
+}
+
+void ExactOracle::imageSize(int resolution, double aspect, int& width, int& height) {
+    imageSizeForAspect(resolution, aspect, width, height);
+}
+
+int ExactOracle::rayCount(int rays_per_turn, double fov_deg) {
+    const double rays = std::ceil(std::clamp(fov_deg, 0.0, 360.0) / 360.0 * rays_per_turn);
+    return std::max(64, int(rays));
+}
+
+void ExactOracle::reset(const Scene& scene) {
+    order_.clear();
+    order_.reserve(scene.objects.size());
+    seen_.assign(scene.objects.size(), 0);
+    shifts_.assign(scene.objects.size(), glm::dvec3(0.0));
+    size_t largest_mesh = 0;
+    for (const SceneObject& object : scene.objects)
+        if (object.mesh) largest_mesh = std::max(largest_mesh, object.mesh->vertices.size());
+    id_buffer_.reserveMeshVertices(largest_mesh);
+    if (scene.dimensions == 2) {
+        sweep_.resize(rayCount(options_.oracle_rays_per_turn, scene.camera.fov_deg),
+                      scene.camera.fov_deg);
+    } else {
+        int width, height;
+        imageSize(options_.oracle_resolution, scene.camera.aspect, width, height);
+        id_buffer_.resize(width, height);
+    }
+}
+
+void ExactOracle::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
+    out.stats = CullStats{};
+    out.pvs.clear();
+    // Sized in reset(); these only grow when cull() is handed a larger scene.
+    if (seen_.size() != scene.objects.size()) {
+        seen_.resize(scene.objects.size());
+        shifts_.resize(scene.objects.size());
+    }
+    std::fill(seen_.begin(), seen_.end(), char(0));
+    order_.clear();
+    if (scene.dimensions == 2)
+        cull2d(scene, camera, t, out);
+    else
+        cull3d(scene, camera, t, out);
+    collect(scene, out);
+}
+
+void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
+    int width, height;
+    imageSize(options_.oracle_resolution, camera.aspect, width, height);
+    id_buffer_.resize(width, height);
+    id_buffer_.begin(camera);
+
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const glm::dvec3 shift = scene.displacementAt(object, t);
+        shifts_[i] = shift;
+        const double key = object.shape == ShapeKind::Sphere
+                               ? id_buffer_.minDepthOfSphere(object.center + shift, object.radius)
+                               : id_buffer_.minDepthOfBox(object.bounds.translated(shift));
+        order_.emplace_back(key, int(i));
+    }
+    // Front to back, so that hidden pixels are skipped with one compare.
+    std::sort(order_.begin(), order_.end());
+
+    int64_t tested = 0;
+    for (const auto& [key, i] : order_) {
+        const SceneObject& object = scene.objects[size_t(i)];
+        const glm::dvec3& shift = shifts_[size_t(i)];
+        bool drawn = false;
+        switch (object.shape) {
+            case ShapeKind::Sphere:
+                drawn = id_buffer_.drawSphere(i, object.center + shift, object.radius);
+                break;
+            case ShapeKind::Box:
+                drawn = id_buffer_.drawBox(i, object.box.translated(shift));
+                break;
+            case ShapeKind::Mesh:
+                if (object.mesh)
+                    drawn = id_buffer_.drawMesh(i, *object.mesh, object.center + shift);
+                break;
+            case ShapeKind::Polygon:
+                break;  // 2D only
+        }
+        tested += drawn ? 1 : 0;
+    }
+    id_buffer_.markVisible(seen_);
+    out.stats.set(Counter::ObjectsTested, tested);
+    out.stats.set(Counter::PixelsSampled, int64_t(width) * height);
+}
+
+void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
+    sweep_.resize(rayCount(options_.oracle_rays_per_turn, camera.fov_deg), camera.fov_deg);
+    sweep_.begin(camera);
+
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const glm::dvec3 shift = scene.displacementAt(object, t);
+        shifts_[i] = shift;
+        const double key = object.shape == ShapeKind::Sphere
+                               ? sweep_.minDistanceOfCircle(object.center + shift, object.radius)
+                               : sweep_.minDistanceOfBox(object.bounds.translated(shift));
+        order_.emplace_back(key, int(i));
+    }
+    std::sort(order_.begin(), order_.end());
+
+    int64_t tested = 0;
+    for (const auto& [key, i] : order_) {
+        const SceneObject& object = scene.objects[size_t(i)];
+        const glm::dvec3& shift = shifts_[size_t(i)];
+        bool drawn = false;
+        switch (object.shape) {
+            case ShapeKind::Sphere:
+                drawn = sweep_.drawCircle(i, object.center + shift, object.radius);
+                break;
+            case ShapeKind::Box:
+                drawn = sweep_.drawBox(i, object.box.translated(shift));
+                break;
+            case ShapeKind::Polygon:
+                drawn = sweep_.drawPolygon(i, object.points.data(), object.points.size(), shift);
+                break;
+            case ShapeKind::Mesh:
+                break;  // 3D only
+        }
+        tested += drawn ? 1 : 0;
+    }
+    sweep_.markVisible(seen_);
+    out.stats.set(Counter::ObjectsTested, tested);
+    out.stats.set(Counter::PixelsSampled, sweep_.rays());
+}
+
+void ExactOracle::collect(const Scene& scene, FrameResult& out) {
+    for (size_t i = 0; i < seen_.size(); ++i)
+        if (seen_[i]) out.pvs.push_back(scene.objects[i].id);
+    std::sort(out.pvs.begin(), out.pvs.end());
+}
+
+}  // namespace gridcull

@@ -1,0 +1,86 @@
+// `exact`: the reference visible set. Every conservative culler (vfc, rgvc, the
+// lazy grids, bsp-oq, hzb-tbv) is tested against it: its PVS must contain every id
+// this oracle reports at the same frame. It shares no code with any culling
+// algorithm (only the scene, the camera and culling/scene/ray_intersect.h), keeps no
+// state between frames, and never over-estimates by design.
+//
+// 3D: an object-ID buffer (culling/raster/id_depth_buffer.h) of
+// CullerOptions::oracle_resolution pixels on the long side, the other side from
+// the camera's aspect (1024 x 576 at 16:9 by default), sampled at pixel centres,
+// depth = view-space distance along the forward axis, only [near, far] counts.
+// Spheres and boxes are intersected exactly per pixel, meshes rasterized exactly
+// per pixel centre (near-plane clipped, perspective-correct depth, two-sided).
+// 2D: an angular sweep (culling/oracle/exact_oracle_sweep.h) of
+// max(64, ceil(fov / 360 * CullerOptions::oracle_rays_per_turn)) rays over the
+// wedge, at the centres of equal angular bins, exact against circles, boxes and
+// polygons, cut at far.
+//
+// Exactness: the result is exact up to the sampling. An object is reported iff
+// some pixel centre (ray) sees it first; nothing hidden is ever reported, and a
+// visible part is missed only if it falls between samples. Resolved size: in 3D
+// a visible region containing a disc of radius >= 0.71 pixel (half the pixel
+// diagonal) always contains a pixel centre; one pixel spans 2 tan(fov_y/2) /
+// height in the image plane, about 0.115 degrees at fov 60 and 576 rows. In 2D a
+// visible angular span of at least one bin, fov / rays (0.022 degrees at 16384
+// rays per turn), always contains a ray. Smaller or thinner visible slivers
+// (e.g. an object seen through a gap narrower than a pixel) may be missed.
+//
+// Shapes outside their dimension (polygons in 3D, meshes in 2D; the loader
+// rejects both) are ignored. A camera inside a sphere, box or polygon sees only
+// it; inside a closed mesh, wherever the near-plane point is inside it.
+//
+// Counters: objects_tested = objects drawn into the buffer (not rejected whole as
+// beyond [near, far], behind the camera or off screen); pixels_sampled = pixels
+// (3D) or rays (2D) per frame.
+// Cost per frame: O(pixels + objects log objects + the objects' screen footprints
+// + mesh triangles) in 3D, where front-to-back order lets hidden parts be skipped
+// per pixel and per 16 x 16 tile; O(rays + the objects' angular footprints *
+// edges) in 2D. Measured (RelWithDebInfo, one core): the 2000-sphere default
+// scene at 1024 x 576 takes about 6 ms per frame (median over its 150 frames).
+// Buffers are sized in reset() and when the resolution or fov changes, never
+// per frame.
+#pragma once
+#include <utility>
+#include <vector>
+
+#include "culling/api/culler.h"
+#include "culling/raster/id_depth_buffer.h"
+#include "culling/oracle/exact_oracle_sweep.h"
+
+namespace gridcull {
+
+// The largest options the oracle honours, so that a flag can never ask it for
+// more memory than a desktop has: 8192 x 4608 pixels take about 470 MiB (depth,
+// id and parity per pixel), 2^22 rays about 64 MiB. Command lines should reject
+// larger values with a message; the oracle clamps them.
+constexpr int kMaxOracleResolution = kMaxImageResolution;
+constexpr int kMaxOracleRaysPerTurn = 1 << 22;
+
+class ExactOracle final : public Culler {
+public:
+    // Options are clamped to [1, kMaxOracleResolution] and [1, kMaxOracleRaysPerTurn].
+    explicit ExactOracle(const CullerOptions& options);
+    const char* name() const override { return "exact"; }
+    void reset(const Scene& scene) override;
+    void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+
+    // The buffer size used for a camera: long side = oracle_resolution.
+    static void imageSize(int resolution, double aspect, int& width, int& height);
+    // The ray count used for a 2D wedge of fov_deg.
+    static int rayCount(int rays_per_turn, double fov_deg);
+
+private:
+    void cull3d(const Scene& scene, const Camera& camera, double t, FrameResult& out);
+    void cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out);
+    // Fills out.pvs from the indices marked in seen_, sorted by id.
+    void collect(const Scene& scene, FrameResult& out);
+
+    CullerOptions options_;
+    IdDepthBuffer id_buffer_;
+    OracleAngularSweep sweep_;
+    std::vector<std::pair<double, int>> order_;  // (nearest possible depth, object index)
+    std::vector<char> seen_;                     // per object index
+    std::vector<glm::dvec3> shifts_;             // per object index: displacement at t
+};
+
+}  // namespace gridcull

@@ -1,0 +1,166 @@
+// The 3D half of the exact oracle (culling/oracle/exact_oracle.h): an object-ID buffer
+// with a depth per pixel, filled by exact per-pixel intersection.
+//
+// Pixel (px, py), px in [0, width), py in [0, height) from the top, is sampled at
+// its centre: the ray eye + s * (forward + u*right + v*up) with
+//   u = (2 (px + 0.5) / width - 1) * tan(fov_y / 2) * aspect,
+//   v = (1 - 2 (py + 0.5) / height) * tan(fov_y / 2),
+// right/up/forward from Camera::basis. The forward component is 1, so s is the
+// view-space depth along the forward axis (world units), and a pixel keeps the
+// nearest s in [near, far]. The pixel grid covers exactly the camera's frustum
+// (aspect from the camera, not from width / height).
+//
+// Spheres and boxes are intersected exactly (culling/scene/ray_intersect.h); a ray that
+// starts inside one, or whose near-plane point is inside, meets it at depth near.
+// Meshes are rasterized triangle by triangle: near-plane clipping, a top-left fill
+// rule, perspective-correct depth, no back-face culling. A closed mesh is solid:
+// where its triangles enclose the near-plane point (odd crossing count behind it)
+// it is written at depth near, so the cap the near plane cuts off still occludes.
+//
+// Only candidate pixels are tested, never fewer than can be hit: for a sphere in
+// front of the eye plane the rows between its tangent planes through the eye and
+// per row the interval of columns solving the ray-sphere quadratic; for anything
+// that crosses the eye plane, the projection of its part at depth >= near (the
+// near plane clips it to a bounded convex piece); for a box, the projection of
+// its corners and near-plane edge crossings; for a triangle, its clipped bounds.
+//
+// Draw calls compare with a strict "<": of two objects at exactly the same depth
+// the one drawn first keeps the pixel. Draw front to back (minDepth*) for speed:
+// each call skips pixels whose stored depth is already nearer than the object,
+// and whole 16 x 16 tiles whose farthest stored depth is (a coarse max-depth
+// buffer refreshed after each draw; a stale tile only errs towards "farther", so
+// the skipping never changes the result). No call allocates; resize() does.
+#pragma once
+#include <algorithm>
+#include <climits>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "culling/scene/camera.h"
+#include "culling/raster/pixel_range.h"
+#include "culling/scene/scene.h"
+
+namespace gridcull {
+
+// The largest side of any image the software buffers are made at, so that no
+// option can ask for more memory than a desktop has: 8192 x 4608 pixels take
+// about 470 MiB (depth, id and parity per pixel).
+constexpr int kMaxImageResolution = 8192;
+
+// The size of an image over a camera of `aspect` (width / height) with
+// `long_side` pixels on its long side (clamped to [1, kMaxImageResolution]) and
+// the other side in proportion, at least 1. A non-positive or non-finite aspect
+// counts as 1.
+void imageSizeForAspect(int long_side, double aspect, int& width, int& height);
+
+class IdDepthBuffer {
+public:
+    // Allocates width * height pixels (each >= 1); no-op when the size is unchanged.
+    void resize(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Makes room for meshes of up to `vertices` vertices, so drawMesh never allocates.
+    void reserveMeshVertices(size_t vertices) { view_vertices_.reserve(vertices); }
+
+    // Takes the camera for the following draw calls and clears every pixel.
+    void begin(const Camera& camera);
+
+    // A lower bound of the depth of any point of the shape (may be < near or < 0).
+    double minDepthOfSphere(const glm::dvec3& center, double radius) const;
+    double minDepthOfBox(const Aabb& box) const;
+
+    // Each draw writes `index` into the pixels it wins and returns false when the
+    // object was rejected as a whole (outside [near, far] or off screen).
+    // Cost: O(pixels of the object's screen bound), plus O(triangles) for meshes.
+    bool drawSphere(int index, const glm::dvec3& center, double radius);
+    bool drawBox(int index, const Aabb& box);
+    // mesh.vertices[i] + offset are the world positions (offset = the object's
+    // center plus its displacement).
+    bool drawMesh(int index, const TriangleMesh& mesh, const glm::dvec3& offset);
+
+    // Sets seen[index] = 1 for every index left in the buffer; seen must be large
+    // enough for every index drawn. O(pixels).
+    void markVisible(std::vector<char>& seen) const;
+
+    // Read access for the lazy occlusion grid (culling/lazy_grid/lazy_grid.h), which uses this
+    // buffer as its software z-buffer: row py's depths (+infinity where nothing was
+    // drawn), and the pixel rectangle that the last draw call returning true may
+    // have written (a call returning false writes nothing and leaves it as it was).
+    const double* depthRow(int py) const { return depth_.data() + size_t(py) * size_t(width_); }
+    ScreenRange lastDrawCols() const { return last_cols_; }
+    ScreenRange lastDrawRows() const { return last_rows_; }
+
+private:
+    struct ScreenVertex {
+        double x, y;   // continuous pixel coordinates, pixel centres at +0.5
+        double inv_z;  // 1 / depth
+    };
+    glm::dvec3 toView(const glm::dvec3& world) const;
+    double columnOf(double u) const;  // continuous pixel column of slope u
+    double rowOf(double v) const;     // continuous pixel row of slope v
+    void fillNear(int index);         // the whole screen at depth near: the camera is inside
+    // Writes the ray-box / ray-sphere solution per pixel over rows [row_lo, row_hi]
+    // and columns [col_lo, col_hi].
+    void boxPixels(int index, const Aabb& box, double z_min, int col_lo, int col_hi, int row_lo,
+                   int row_hi);
+    // Rasterizes one view-space triangle with z >= near everywhere: depth-tested
+    // into the buffer, or (parity) toggling parity_ without any depth test.
+    void rasterTriangle(int index, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                        bool parity);
+    // Clips a view-space triangle at z = near and rasterizes what remains.
+    void clipAndRaster(int index, const glm::dvec3 tri[3], bool parity);
+
+    // The coarse max-depth buffer. A write marks its pixel dirty; refreshTiles()
+    // recomputes the tiles under the dirty rectangle. Between the two, a tile's
+    // value is still >= every depth in it, which is all the skipping relies on.
+    static constexpr int kTile = 16;
+    void markDirty(int px, int py) {
+        dirty_cols_.lo = std::min(dirty_cols_.lo, px);
+        dirty_cols_.hi = std::max(dirty_cols_.hi, px);
+        dirty_rows_.lo = std::min(dirty_rows_.lo, py);
+        dirty_rows_.hi = std::max(dirty_rows_.hi, py);
+    }
+    void markAllDirty() {
+        dirty_cols_ = {0, width_ - 1};
+        dirty_rows_ = {0, height_ - 1};
+    }
+    void refreshTiles();
+    // Calls visit(px) for px in [col_lo, col_hi] of row py, skipping the tiles
+    // whose farthest depth is already <= z.
+    template <typename Visit>
+    void forTileSegments(int py, int col_lo, int col_hi, double z, Visit&& visit) const {
+        const double* tiles = tile_far_.data() + size_t(py / kTile) * size_t(tiles_x_);
+        for (int px = col_lo; px <= col_hi;) {
+            const int end = std::min(col_hi, (px / kTile + 1) * kTile - 1);
+            if (tiles[px / kTile] > z)
+                for (int x = px; x <= end; ++x) visit(x);
+            px = end + 1;
+        }
+    }
+    // May some pixel in the rectangle hold a depth farther than z?
+    bool mayBeNearer(const ScreenRange& cols, const ScreenRange& rows, double z) const;
+
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<double> depth_;
+    std::vector<int32_t> index_;   // -1 where nothing was hit
+    std::vector<uint8_t> parity_;  // per-pixel crossing parity of one closed mesh
+    std::vector<double> column_u_;
+    std::vector<double> row_v_;
+    std::vector<glm::dvec3> view_vertices_;  // one mesh's vertices in view space
+    std::vector<double> tile_far_;           // per tile: its farthest stored depth
+    int tiles_x_ = 0;
+    int tiles_y_ = 0;
+    ScreenRange dirty_cols_{INT_MAX, -1};  // written since the last refreshTiles()
+    ScreenRange dirty_rows_{INT_MAX, -1};
+    ScreenRange last_cols_{INT_MAX, -1};  // the dirty rectangle of the last draw
+    ScreenRange last_rows_{INT_MAX, -1};
+
+    glm::dvec3 eye_{0.0}, right_{1, 0, 0}, up_{0, 1, 0}, forward_{0, 0, 1};
+    double tan_x_ = 1.0, tan_y_ = 1.0;
+    double near_ = 0.1, far_ = 1000.0;
+};
+
+}  // namespace gridcull

@@ -1,0 +1,111 @@
+// What regular-grid culling (`rgvc`, culling/rgvc/rgvc_culler.h) did in its last
+// frame, for the window and for tests: the matrices of Batagelo & Wu's section
+// 3 as read-only views, the traversal in visit order with each voxel's chess
+// layer, the seed voxels, the extended occluders with their four extension steps
+// and occlusion polygons, and the TBVs.
+//
+// Filled only while RgvcCuller::setSnapshotEnabled(true); otherwise only
+// `valid` (false) and `memory` are kept, so culling pays nothing for it. The
+// matrix pointers point into the culler and stay valid until its next cull()
+// or reset(); everything else is owned by the snapshot. Ids in the matrices are
+// object indices into Scene::objects (scene.objects[i].id is the id).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "culling/rgvc/rgvc_occlusion.h"
+#include "grid/bit_matrix.h"
+#include "grid/id_list_matrix.h"
+#include "grid/regular_grid.h"
+
+namespace gridcull {
+
+// One voxel reached by the view-frustum traversal; its visit order is its index
+// in RgvcSnapshot::visits.
+struct RgvcVisit {
+    glm::ivec2 voxel{0};
+    int32_t layer = 0;      // chess distance from the viewer's voxel
+    bool occluded = false;  // already in H when reached (then nothing else was done)
+};
+
+// The seed voxel of one chess layer: where the layer's walk started. The
+// Bresenham line of sight gives it; when that voxel does not touch the frustum
+// (a narrow wedge seen from off the voxel centre) the walk starts at the nearest
+// end of the layer's run instead and `moved` is set.
+struct RgvcSeed {
+    glm::i64vec2 voxel{0};  // may lie outside the grid
+    int64_t layer = 0;
+    bool moved = false;
+};
+
+struct RgvcOccluderView {
+    int64_t layer = 0;  // the chess layer in which its initial voxel was reached
+    RgvcExtendedOccluder occluder;
+    int polygon_count = 0;
+    std::array<RgvcOcclusionPolygon, 2> polygons{};
+    int64_t voxels_occluded = 0;  // voxels its polygons marked in H (some may repeat)
+};
+
+struct RgvcTbvView {
+    int object_index = -1;
+    int object_id = -1;
+    glm::dvec3 centre{0.0};  // world
+    double radius = 0.0;     // world
+    double created = 0.0;    // seconds
+    double expiry = 0.0;     // seconds; infinity for objects that cannot move
+    glm::i64vec2 curve_centre{0};
+    int curve_radius = 0;  // rho, voxels
+    bool filled = false;   // written as a filled disc (the viewer could be inside)
+    bool edge = false;     // reaches outside the grid: kept out of T, tested by its disc
+};
+
+// Bytes held by each matrix (capacities), present or not.
+struct RgvcMatrixMemory {
+    size_t occluder = 0;             // O
+    size_t static_occluder = 0;      // Os, only with static objects
+    size_t occlusion = 0;            // H
+    size_t identifiers_static = 0;   // I, static objects' lists
+    size_t identifiers_dynamic = 0;  // I, dynamic objects' lists
+    size_t tbv = 0;                  // T, only with dynamic objects
+    size_t traversal = 0;            // the visited-and-not-occluded scratch bits
+
+    size_t total() const {
+        return occluder + static_occluder + occlusion + identifiers_static + identifiers_dynamic +
+               tbv + traversal;
+    }
+};
+
+struct RgvcSnapshot {
+    bool valid = false;
+    int64_t frame = 0;  // frames culled since reset, the first is 1
+    double t = 0.0;
+    RegularGrid grid;
+    glm::dvec3 viewpoint{0.0};
+    glm::dvec3 forward{1.0, 0.0, 0.0};
+    double fov_deg = 0.0;
+    double far = 0.0;
+    glm::i64vec2 viewer_voxel{0};  // may lie outside the grid
+
+    const BitMatrix* occluder = nullptr;                // O
+    const BitMatrix* static_occluder = nullptr;         // Os (nullptr without static objects)
+    const BitMatrix* occlusion = nullptr;               // H
+    const IdListMatrix* identifiers_static = nullptr;   // I of static objects
+    const IdListMatrix* identifiers_dynamic = nullptr;  // I of dynamic objects
+    const IdListMatrix* tbvs = nullptr;                 // T (nullptr without dynamic objects)
+
+    std::vector<RgvcVisit> visits;
+    std::vector<RgvcSeed> seeds;
+    std::vector<RgvcOccluderView> occluders;
+    std::vector<RgvcTbvView> tbv_list;
+    int64_t first_layer = 0;
+    int64_t last_layer = -1;          // the last layer traversed
+    bool terminated_early = false;    // stopped after a wholly occluded layer
+    RgvcMatrixMemory memory;
+};
+
+}  // namespace gridcull

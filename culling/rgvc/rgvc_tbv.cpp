@@ -1,0 +1,47 @@
+// TBV discretization for regular-grid culling (Batagelo & Wu, section 4.1);
+// see rgvc_tbv.h.
+#include "culling/rgvc/rgvc_tbv.h"
+
+#include <algorithm>
+
+namespace gridcull {
+
+namespace {
+
+double smallestVoxelSide(const RegularGrid& grid) {
+    const glm::dvec3 d = grid.voxelSize();
+    return std::min(d.x, d.y);
+}
+
+}  // namespace
+
+RgvcTbvCurve tbvCurveFor(const RegularGrid& grid, const glm::dvec3& centre, double radius) {
+    RgvcTbvCurve curve;
+    const glm::ivec3 v = grid.voxelOf({centre.x, centre.y, 0.0});
+    curve.centre = {v.x, v.y};
+    // In voxel units the disc is an ellipse with semi-axes radius / d.x and
+    // radius / d.y, inside the circle of radius / min(d.x, d.y).
+    const double rho = std::ceil(std::max(0.0, radius) / smallestVoxelSide(grid) + kTbvCurveMargin);
+    curve.radius = int(std::min(rho, 1.0e8));
+    return curve;
+}
+
+bool tbvCurveInsideGrid(const RegularGrid& grid, const RgvcTbvCurve& curve) {
+    const int64_t reach = int64_t(curve.radius) + 1;
+    return curve.centre.x - reach >= 0 && curve.centre.y - reach >= 0 &&
+           curve.centre.x + reach < grid.resolution.x && curve.centre.y + reach < grid.resolution.y;
+}
+
+double tbvLargestRadiusExcluding(const RegularGrid& grid, const glm::dvec3& centre,
+                                 glm::i64vec2 voxel) {
+    const glm::ivec3 v = grid.voxelOf({centre.x, centre.y, 0.0});
+    const double dx = double(voxel.x - v.x), dy = double(voxel.y - v.y);
+    const double dist = std::sqrt(dx * dx + dy * dy);
+    // The largest integer rho with (rho + 1)^2 < dist^2, then the largest radius
+    // whose ceil(radius / side + margin) stays at or below it (a millionth of a
+    // voxel below, against rounding in that ceil).
+    const double rho = std::ceil(dist) - 2.0;
+    return (rho - kTbvCurveMargin - 1e-6) * smallestVoxelSide(grid);
+}
+
+}  // namespace gridcull
