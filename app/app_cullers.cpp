@@ -2,24 +2,11 @@
 
 #include "app/gl_context.h"
 #include "app/gl_image_target.h"
-#include "culling/lazy_grid/lazy_grid_culler.h"
+#include "culling/registry/registry.h"
 
 namespace gridcull {
 
 namespace {
-
-struct GlCullerKind {
-    const char* name;
-    LazyGridVariant variant;
-    LazyGridUpdate update;
-};
-
-constexpr GlCullerKind kGlCullers[] = {
-    {"lazy-grid-gl", LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Lazy},
-    {"lazy-grid-z-gl", LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy},
-    {"busy-grid-gl", LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Busy},
-    {"busy-grid-tight-gl", LazyGridVariant::OcclusionBuffer, LazyGridUpdate::BusyTight},
-};
 
 // One hidden window's context for every -gl culler of the process.
 bool ensureGlContext(std::string& error) {
@@ -35,25 +22,40 @@ bool ensureGlContext(std::string& error) {
     return true;
 }
 
+// The registry algorithm of a -gl name, or "".
+std::string glBaseOf(std::string_view name) {
+    if (name.size() <= kGlSuffix.size() ||
+        name.substr(name.size() - kGlSuffix.size()) != kGlSuffix)
+        return "";
+    const std::string base(name.substr(0, name.size() - kGlSuffix.size()));
+    const FamilyEntry* family = familyOfAlgorithm(base);
+    return family && family->draws_image ? base : "";
+}
+
 }  // namespace
 
-std::vector<std::string> appCullerNames() {
-    std::vector<std::string> names = cullerNames();
-    for (const GlCullerKind& kind : kGlCullers) names.emplace_back(kind.name);
+std::vector<std::string> appAlgorithmNames() {
+    std::vector<std::string> names = algorithmNames();
+    for (const FamilyEntry& family : families())
+        if (family.draws_image)
+            for (const AlgorithmEntry& a : family.algorithms)
+                names.push_back(a.name + std::string(kGlSuffix));
     return names;
 }
 
-std::unique_ptr<Culler> makeAppCuller(std::string_view name, const CullerOptions& options,
+std::string registryAlgorithmOf(std::string_view name) {
+    if (familyOfAlgorithm(name)) return std::string(name);
+    return glBaseOf(name);
+}
+
+std::unique_ptr<Culler> makeAppCuller(std::string_view name, const KnobValues& knobs,
                                       std::string& error) {
-    for (const GlCullerKind& kind : kGlCullers) {
-        if (name != kind.name) continue;
-        if (!ensureGlContext(error)) return nullptr;
-        auto target = std::make_unique<GlImageTarget>();
-        if (!target->init(error)) return nullptr;
-        return std::make_unique<LazyGridCuller>(kind.variant, kind.update, options,
-                                                std::move(target), kind.name);
-    }
-    return makeCuller(name, options, error);
+    const std::string base = glBaseOf(name);
+    if (base.empty()) return makeCuller(name, knobs, error);
+    if (!ensureGlContext(error)) return nullptr;
+    auto target = std::make_unique<GlImageTarget>();
+    if (!target->init(error)) return nullptr;
+    return makeCuller(base, knobs, error, std::move(target), std::string(name));
 }
 
 }  // namespace gridcull

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "culling/api/cull_stats.h"
+#include "culling/api/counters.h"
 
 namespace gridcull {
 

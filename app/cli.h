@@ -1,10 +1,12 @@
-// The `gridcull` command line (shared/spec/cli.md). Every subcommand returns an
-// exit status: 0 done, 2 bad command line, 3 scene rejected, 1 anything else.
+// The `gridcull` command line: subcommands view, cull, bench, shot and knobs,
+// parsed with CLI11 (app/cli_options.h binds the registry's knobs and the
+// families' view flags to it). Every subcommand returns an exit status: 0 done,
+// 2 bad command line, 3 scene rejected, 1 anything else.
 #pragma once
-#include <set>
 #include <string>
+#include <vector>
 
-#include "culling/api/culler.h"
+#include "culling/api/knobs.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull {
@@ -16,41 +18,30 @@ constexpr int kExitSceneRejected = 3;
 
 int runCli(int argc, char** argv);
 
-// Subcommands; argv[first] is the first argument after the command's name.
-int runCullCommand(int argc, char** argv, int first);
-int runBenchCommand(int argc, char** argv, int first);
-int runShotCommand(int argc, char** argv, int first);
-int runViewCommand(int argc, char** argv, int first);
-
 // Loads a scene file; on failure prints every message to stderr and returns false.
 bool loadSceneOrReport(const std::string& path, Scene& scene);
 
 // Prints "gridcull CMD: message" and a pointer to --help; returns kExitUsage.
-int usageError(const char* command, const std::string& message);
+int usageError(const std::string& command, const std::string& message);
 
-// The flags every culling command shares, and reading them into CullerOptions.
-extern const char* const kCullerOptionsHelp;
-class CliArgs;
-bool readCullerOptions(CliArgs& args, CullerOptions& options);
-// A command's own value flags plus every flag readCullerOptions reads.
-std::set<std::string> withCullerOptionFlags(std::set<std::string> own);
-// One line naming every option's value, printed by bench so a table says what it measured.
-std::string describeCullerOptions(const CullerOptions& options);
-// Checks that every name in a comma-separated list is one of `known` (default:
-// cullerNames(), what the window offers; cull and bench also take appCullerNames()).
+// Checks that every name in a comma-separated list is one of `known`.
 bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, std::string& error,
-                     const std::vector<std::string>& known = cullerNames());
+                     const std::vector<std::string>& known);
 
 // One entry of bench's --algo list: NAME, or NAME:FLAG=VALUE[:FLAG=VALUE...] where
-// each FLAG is a culler option flag without its dashes (cell-size, lazy-prob, ...),
-// applied over the command's own options, so that one run can time the same
+// each FLAG is a knob's flag without its dashes (lazy-cell-size, rgvc-validity,
+// ...), set over the command's own knobs, so that one run can time the same
 // algorithm at several settings side by side. `label` is the entry as written.
 struct AlgoVariant {
     std::string label;
     std::string name;
-    CullerOptions options;
+    KnobValues knobs;
 };
-bool parseAlgoVariants(const std::string& list, const CullerOptions& base,
+bool parseAlgoVariants(const std::string& list, const KnobValues& base,
                        std::vector<AlgoVariant>& variants, std::string& error);
+
+// One line naming every knob's value, printed by bench so a table says what it
+// measured: "oracle-res=1024 oracle-rays=16384 rgvc-validity=0.5 ...".
+std::string describeKnobs(const KnobValues& knobs);
 
 }  // namespace gridcull

@@ -11,36 +11,14 @@
 #include "app/app_cullers.h"
 #include "app/bench_table.h"
 #include "app/cli.h"
-#include "app/cli_args.h"
+#include "app/cli_commands.h"
 #include "app/output_file.h"
+#include "culling/registry/registry.h"
 #include "culling/scene/object_triangles.h"
 
 namespace gridcull {
 
 namespace {
-
-const char* const kBenchHelp =
-    "usage: gridcull bench SCENE --algo A[,B...] [--frames N] [--runs R] [--csv FILE]\n"
-    "\n"
-    "Times the algorithms on the same frames of SCENE, side by side in one process,\n"
-    "R runs (default 5), and prints one row per algorithm: the median and 95th\n"
-    "percentile cull time per frame (each frame's median over runs), the ratio to the\n"
-    "first algorithm listed, the mean PVS size, the mean exact visible count, PVS/exact,\n"
-    "the false culls (ids the exact oracle sees that the PVS lacks) and the frames\n"
-    "that had any, the mean triangles of the PVS (culling/scene/object_triangles.h), and\n"
-    "each algorithm's counters per frame.\n"
-    "An --algo entry may set culler options for itself: NAME:FLAG=VALUE[:FLAG=VALUE],\n"
-    "e.g. lazy-grid:cell-size=8,lazy-grid:cell-size=64 times two cell sizes side by side.\n"
-    "Quote ratios, not milliseconds: the machine may be shared.\n"
-    "\n"
-    "  --algo A[,B...]    algorithms, comma-separated:";
-
-const char* const kBenchHelpTail =
-    "\n"
-    "  --frames N         frames to run (default: the scene's time.frames)\n"
-    "  --runs R           repetitions (default 5)\n"
-    "  --csv FILE         also write one row per algorithm and frame to FILE\n"
-    "  --no-quality       skip the exact oracle (pvs only, faster)\n";
 
 class ProgressBar {
 public:
@@ -78,38 +56,61 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
 
 }  // namespace
 
-int runBenchCommand(int argc, char** argv, int first) {
-    CliArgs args(withCullerOptionFlags({"algo", "frames", "runs", "csv"}), {"help", "no-quality"});
-    if (!args.parse(argc, argv, first)) return usageError("bench", args.error());
-    if (args.has("help")) {
-        std::string names;
-        for (const auto& n : appCullerNames()) names += " " + n;
-        std::printf("%s%s%s%s", kBenchHelp, names.c_str(), kBenchHelpTail, kCullerOptionsHelp);
-        return kExitOk;
-    }
-    if (args.positional().size() != 1) return usageError("bench", "expected one SCENE file");
-    if (!args.has("algo")) return usageError("bench", "--algo is required");
+CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench",
+        "Times the algorithms on the same frames of SCENE, side by side in one process,\n"
+        "R runs, and prints one row per algorithm: the median and 95th percentile cull\n"
+        "time per frame (each frame's median over runs), the ratio to the first algorithm\n"
+        "listed, the mean PVS size, the mean exact visible count, PVS/exact, the false\n"
+        "culls (ids the exact oracle sees that the PVS lacks) and the frames that had any,\n"
+        "the mean triangles of the PVS, and each algorithm's counters per frame.\n"
+        "An --algo entry may set knobs for itself: NAME:FLAG=VALUE[:FLAG=VALUE], e.g.\n"
+        "lazy-grid:lazy-cell-size=8,lazy-grid:lazy-cell-size=64 times two cell sizes side\n"
+        "by side. Quote ratios, not milliseconds: the machine may be shared.");
+    cmd->add_option("SCENE", c.scene, "the scene file")->required()->type_name("");
+    cmd->add_option("--algo", c.algo, "algorithms, comma-separated (listed below)")
+        ->required()
+        ->type_name("A[,B...]");
+    cmd->add_option("--frames", c.frames,
+                    "frames to run, 1 to 1000000 (default: the scene's time.frames)")
+        ->check(CLI::Range(1LL, 1000000LL).description(""))
+        ->type_name("N");
+    cmd->add_option("--runs", c.runs, "repetitions, 1 to 1000 (default 5)")
+        ->check(CLI::Range(1LL, 1000LL).description(""))
+        ->type_name("N");
+    cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
+        ->type_name("FILE");
+    cmd->add_flag("--no-quality", c.no_quality, "skip the exact oracle (pvs only, faster)");
+    c.knobs.addTo(*cmd, false);
+    cmd->footer(cullingHelpFooter(appAlgorithmNames()));
+    return cmd;
+}
+
+int runBench(const BenchCommand& c) {
     std::string error;
-    CullerOptions options;
-    long long frames = -1, runs = 5;
-    if (!args.integer("frames", 1, 1000000, frames) || !args.integer("runs", 1, 1000, runs) ||
-        !readCullerOptions(args, options))
-        return usageError("bench", args.error());
+    KnobValues knobs, view_flags;
+    if (!c.knobs.read(knobs, view_flags, error)) return usageError("bench", error);
     std::vector<AlgoVariant> algos;
-    if (!parseAlgoVariants(args.text("algo", ""), options, algos, error))
-        return usageError("bench", error);
+    if (!parseAlgoVariants(c.algo, knobs, algos, error)) return usageError("bench", error);
 
     Scene scene;
-    if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
-    if (frames < 0) frames = scene.frames;
-    const int n_frames = int(frames), n_runs = int(runs);
-    const bool quality = !args.has("no-quality");
+    if (!loadSceneOrReport(c.scene, scene)) return kExitSceneRejected;
+    const int n_frames = int(c.frames < 0 ? scene.frames : c.frames), n_runs = int(c.runs);
+    const bool quality = !c.no_quality;
+    std::vector<std::string> run_algorithms;
+    for (const AlgoVariant& v : algos) {
+        run_algorithms.push_back(registryAlgorithmOf(v.name));
+        if (!algorithmFits(run_algorithms.back(), scene, error))
+            return usageError("bench", c.scene + ": " + error);
+    }
+    printUnusedNotes("bench", c.knobs, run_algorithms);
 
     std::vector<std::unique_ptr<Culler>> cullers;
     std::vector<AlgoBench> benches(algos.size());
     for (size_t i = 0; i < algos.size(); ++i) {
-        cullers.push_back(makeAppCuller(algos[i].name, algos[i].options, error));
-        if (!cullers.back() || !cullers.back()->supports(scene, error)) {
+        cullers.push_back(makeAppCuller(algos[i].name, algos[i].knobs, error));
+        if (!cullers.back()) {
             std::cerr << "gridcull bench: " << algos[i].label << ": " << error << "\n";
             return kExitFailure;
         }
@@ -124,7 +125,7 @@ int runBenchCommand(int argc, char** argv, int first) {
     }
     std::unique_ptr<Culler> oracle;
     if (quality) {
-        oracle = makeCuller("exact", options, error);
+        oracle = makeCuller("exact", knobs, error);
         if (!oracle) {
             std::cerr << "gridcull bench: " << error << "\n";
             return kExitFailure;
@@ -134,11 +135,11 @@ int runBenchCommand(int argc, char** argv, int first) {
 
     std::printf("scene: %s (%dD, %zu objects), frames 0..%d, %d runs, algorithms: %s\n",
                 scene.name.c_str(), scene.dimensions, scene.objects.size(), n_frames - 1, n_runs,
-                args.text("algo", "").c_str());
-    std::printf("options: %s\n", describeCullerOptions(options).c_str());
+                c.algo.c_str());
+    std::printf("options: %s\n", describeKnobs(knobs).c_str());
     std::fflush(stdout);
 
-    ProgressBar progress(frames * runs);
+    ProgressBar progress((long long)n_frames * n_runs);
     FrameResult result, exact;
     const size_t k = algos.size();
     for (int run = 0; run < n_runs; ++run) {
@@ -168,19 +169,19 @@ int runBenchCommand(int argc, char** argv, int first) {
     }
 
     std::fputs(formatBenchTable(benches, n_frames, n_runs).c_str(), stdout);
-    if (args.has("csv")) {
+    if (!c.csv.empty()) {
         OutputFile csv;
         const std::string text = formatBenchCsv(benches, n_frames, n_runs, scene.dt);
-        bool ok = csv.open(args.text("csv", ""), error);
+        bool ok = csv.open(c.csv, error);
         if (ok && std::fwrite(text.data(), 1, text.size(), csv.stream()) != text.size()) {
-            error = "writing '" + args.text("csv", "") + "' failed";
+            error = "writing '" + c.csv + "' failed";
             ok = false;
         }
         if (!ok || !csv.commit(error)) {
             std::cerr << "gridcull bench: " << error << "\n";
             return kExitFailure;
         }
-        std::printf("csv: %s\n", args.text("csv", "").c_str());
+        std::printf("csv: %s\n", c.csv.c_str());
     }
     return kExitOk;
 }

@@ -5,64 +5,57 @@
 
 #include "app/app_cullers.h"
 #include "app/cli.h"
-#include "app/cli_args.h"
+#include "app/cli_commands.h"
 #include "app/frame_json.h"
 #include "app/output_file.h"
+#include "culling/registry/registry.h"
 
 namespace gridcull {
 
-namespace {
+CLI::App* addCullCommand(CLI::App& app, CullCommand& c) {
+    CLI::App* cmd = app.add_subcommand(
+        "cull",
+        "Runs algorithm A over frames 0..N-1 of SCENE and writes one JSON line per frame:\n"
+        "frame, t, algo, camera, the sorted pvs, and stats (cull_ms and the algorithm's\n"
+        "counters). Without --out the lines go to standard output. The file appears only\n"
+        "when complete.");
+    cmd->add_option("SCENE", c.scene, "the scene file")->required()->type_name("");
+    cmd->add_option("--algo", c.algo, "one algorithm (listed below)")->required()->type_name("A");
+    cmd->add_option("--frames", c.frames,
+                    "frames to run, 1 to 100000000 (default: the scene's time.frames)")
+        ->check(CLI::Range(1LL, 100000000LL).description(""))
+        ->type_name("N");
+    cmd->add_option("--out", c.out, "write to FILE instead of standard output")->type_name("FILE");
+    c.knobs.addTo(*cmd, false);
+    cmd->footer(cullingHelpFooter(appAlgorithmNames()));
+    return cmd;
+}
 
-const char* const kCullHelp =
-    "usage: gridcull cull SCENE --algo A [--frames N] [--out FILE] [options]\n"
-    "\n"
-    "Runs algorithm A over frames 0..N-1 of SCENE and writes one JSON line per frame:\n"
-    "frame, t, algo, camera, the sorted pvs, and stats (cull_ms and the algorithm's\n"
-    "counters). Without --out the lines go to standard output. The file appears only\n"
-    "when complete.\n"
-    "\n"
-    "  --algo A           one algorithm (gridcull bench --help lists them)\n"
-    "  --frames N         frames to run (default: the scene's time.frames)\n"
-    "  --out FILE         write to FILE instead of standard output\n";
-
-}  // namespace
-
-int runCullCommand(int argc, char** argv, int first) {
-    CliArgs args(withCullerOptionFlags({"algo", "frames", "out"}), {"help"});
-    if (!args.parse(argc, argv, first)) return usageError("cull", args.error());
-    if (args.has("help")) {
-        std::printf("%s%s", kCullHelp, kCullerOptionsHelp);
-        return kExitOk;
-    }
-    if (args.positional().size() != 1) return usageError("cull", "expected one SCENE file");
-    if (!args.has("algo")) return usageError("cull", "--algo is required");
+int runCull(const CullCommand& c) {
     std::vector<std::string> algos;
     std::string error;
-    if (!splitAlgorithms(args.text("algo", ""), algos, error, appCullerNames()))
+    if (!splitAlgorithms(c.algo, algos, error, appAlgorithmNames()))
         return usageError("cull", error);
     if (algos.size() != 1) return usageError("cull", "--algo takes one algorithm here");
-    CullerOptions options;
-    long long frames = -1;
-    if (!args.integer("frames", 1, 100000000, frames) || !readCullerOptions(args, options))
-        return usageError("cull", args.error());
+    KnobValues knobs, view_flags;
+    if (!c.knobs.read(knobs, view_flags, error)) return usageError("cull", error);
 
     Scene scene;
-    if (!loadSceneOrReport(args.positional()[0], scene)) return kExitSceneRejected;
-    if (frames < 0) frames = scene.frames;
+    if (!loadSceneOrReport(c.scene, scene)) return kExitSceneRejected;
+    const long long frames = c.frames < 0 ? scene.frames : c.frames;
+    if (!algorithmFits(registryAlgorithmOf(algos[0]), scene, error))
+        return usageError("cull", c.scene + ": " + error);
+    printUnusedNotes("cull", c.knobs, {registryAlgorithmOf(algos[0])});
 
-    std::unique_ptr<Culler> culler = makeAppCuller(algos[0], options, error);
+    std::unique_ptr<Culler> culler = makeAppCuller(algos[0], knobs, error);
     if (!culler) {
         std::cerr << "gridcull cull: " << error << "\n";
         return kExitFailure;
     }
-    if (!culler->supports(scene, error)) {
-        std::cerr << "gridcull cull: " << algos[0] << ": " << error << "\n";
-        return kExitFailure;
-    }
     OutputFile file;
     std::FILE* out = stdout;
-    if (args.has("out")) {
-        if (!file.open(args.text("out", ""), error)) {
+    if (!c.out.empty()) {
+        if (!file.open(c.out, error)) {
             std::cerr << "gridcull cull: " << error << "\n";
             return kExitFailure;
         }
@@ -80,7 +73,7 @@ int runCullCommand(int argc, char** argv, int first) {
         appendFrameJson(line, frame, t, culler->name(), camera, result);
         std::fwrite(line.data(), 1, line.size(), out);
     }
-    if (args.has("out") && !file.commit(error)) {
+    if (!c.out.empty() && !file.commit(error)) {
         std::cerr << "gridcull cull: " << error << "\n";
         return kExitFailure;
     }

@@ -1,11 +1,12 @@
 #include "app/debugger.h"
 
 #include <algorithm>
-#include <iostream>
 
 #include "app/hover_pick.h"
-#include "culling/scene/ray_pick.h"
 #include "culling/io/scene_loader.h"
+#include "culling/registry/registry.h"
+#include "culling/scene/ray_pick.h"
+#include "ui/registry/family_views.h"
 
 namespace gridcull {
 
@@ -13,6 +14,8 @@ namespace {
 
 // Frames played per call at most; beyond that playback runs slower than real time.
 constexpr int kMaxFramesPerAdvance = 4;
+// What the window falls back to when a scene does not fit the selected culler.
+constexpr const char* kFallbackAlgorithm = "vfc";
 
 int indexOfName(const std::vector<std::string>& names, const std::string& name) {
     const auto found = std::find(names.begin(), names.end(), name);
@@ -22,41 +25,70 @@ int indexOfName(const std::vector<std::string>& names, const std::string& name) 
 }  // namespace
 
 bool Debugger::init(const Scene& scene, std::string& error) {
-    algo_names_ = cullerNames();
     if (!renderer_.init(error)) return false;
     if (!session_.open(scene, scene.source_path, options_.algo, error)) return false;
+    if (!checkViewFlags(options_.view_flags, session_.scene(), error)) return false;
+    algo_names_ = gridcull::algorithmNames(session_.scene().dimensions);
+    syncFamilyView();
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
-    if (options_.lazy_object >= 0)
-        lazy_pinned_index_ = session_.scene().indexOf(options_.lazy_object);
     session_.seek(options_.frame);
     if (options_.play) togglePlay();
     return true;
 }
 
-void Debugger::updateHover(double x, double y, bool inside, const WindowRect& view) {
+void Debugger::syncFamilyView() {
+    const FamilyEntry* family = familyOfAlgorithm(session_.algo());
+    const std::string id = family ? family->id : "";
+    if (id == family_id_ && (family_view_ || !findFamilyView(id))) return;
+    family_id_ = id;
+    family_view_.reset();
+    const FamilyViewEntry* entry = findFamilyView(id);
+    if (!entry) return;
+    family_view_ = entry->make();
+    std::string ignored;  // checked in init(); a later scene may lack a picked id
+    family_view_->applyFlags(options_.view_flags, session_.scene(), ignored);
+}
+
+FamilyViewContext Debugger::familyContext() const {
+    FamilyViewContext context;
+    context.scene = &session_.scene();
+    context.frame = session_.frame();
+    context.t = session_.t();
+    context.algo = session_.algo().c_str();
+    context.snapshot = session_.debugSnapshot();
+    context.knobs = &session_.knobs();
+    context.view_mode = view_mode_;
+    context.hovered_object = hovered_index_;
+    return context;
+}
+
+void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
+                             const WindowRect& view) {
     hovered_index_ = -1;
     hovered_distance_ = 0.0;
-    voxel_hovered_ = false;
-    if (!inside || !view.contains(x, y)) return;
-    const Scene& scene = session_.scene();
-    const ViewMatrices m = view_camera_.matrices(view_mode_, session_.cullingCamera(),
-                                                 double(view.width) / std::max(view.height, 1));
-    glm::dvec3 origin, dir;
-    viewRay(m, x - view.x, y - view.y, view.width, view.height, origin, dir);
-    if (scene.dimensions == 2) {
-        const glm::ivec3 voxel = scene.grid.voxelOf(origin);
-        voxel_hovered_ = true;
-        hovered_voxel_ = {voxel.x, voxel.y};
-        hovered_index_ = pickObject2d(scene, session_.t(), origin, session_.states());
-        return;
+    ViewPointer pointer;
+    if (inside && view.contains(x, y)) {
+        const Scene& scene = session_.scene();
+        const ViewMatrices m = view_camera_.matrices(view_mode_, session_.cullingCamera(),
+                                                     double(view.width) / std::max(view.height, 1));
+        viewRay(m, x - view.x, y - view.y, view.width, view.height, pointer.origin,
+                pointer.direction);
+        pointer.over_view = true;
+        pointer.clicked = clicked;
+        if (scene.dimensions == 2) {
+            hovered_index_ = pickObject2d(scene, session_.t(), pointer.origin, session_.states());
+        } else {
+            double distance = 0.0;
+            const int id = pickObject(scene, session_.t(), pointer.origin, pointer.direction,
+                                      &distance);
+            if (id >= 0) {
+                hovered_index_ = scene.indexOf(id);
+                hovered_distance_ = distance;
+            }
+        }
     }
-    double distance = 0.0;
-    const int id = pickObject(scene, session_.t(), origin, dir, &distance);
-    if (id >= 0) {
-        hovered_index_ = scene.indexOf(id);
-        hovered_distance_ = distance;
-    }
+    if (family_view_) family_view_->pointer(familyContext(), pointer);
 }
 
 void Debugger::advancePlayback(double seconds) {
@@ -96,16 +128,6 @@ void Debugger::toggleFreeze() {
     session_.setCullingCameraFrozen(!session_.cullingCameraFrozen());
 }
 
-void Debugger::pickRgvcOccluder() {
-    const RgvcSnapshot* rgvc = session_.rgvcSnapshot();
-    if (!rgvc || !voxel_hovered_) return;
-    rgvc_view_.occluder = rgvcOccluderAt(*rgvc, hovered_voxel_);
-}
-
-void Debugger::pickLazyObject() {
-    if (session_.lazyGridSnapshot()) lazy_pinned_index_ = hovered_index_;
-}
-
 FrameSnapshot Debugger::snapshot() const {
     FrameSnapshot s;
     s.scene = &session_.scene();
@@ -126,20 +148,12 @@ FrameSnapshot Debugger::snapshot() const {
     s.culling_camera_frozen = session_.cullingCameraFrozen();
     s.scene_file = &session_.sceneFile();
     s.scene_errors = &scene_errors_;
-    s.rgvc = session_.rgvcSnapshot();
-    s.rgvc_view = rgvc_view_;
-    if (s.rgvc && voxel_hovered_) s.rgvc_voxel = &rgvc_voxel_;
-    s.lazy_grid = session_.lazyGridSnapshot();
-    s.lazy_view = lazy_view_;
-    s.lazy_object = lazyObject();
-    s.lazy_object_pinned = hovered_index_ < 0 && lazy_pinned_index_ >= 0;
+    s.note = &note_;
     return s;
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
-    if (const RgvcSnapshot* rgvc = session_.rgvcSnapshot(); rgvc && voxel_hovered_)
-        describeRgvcVoxel(*rgvc, session_.scene(), hovered_voxel_, rgvc_voxel_);
-    return drawDebuggerUi(snapshot(), ui_state_, layout);
+    return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_.get(), familyContext());
 }
 
 void Debugger::setViewMode(ViewMode mode) {
@@ -154,17 +168,37 @@ void Debugger::openSceneFile(const std::string& path) {
         if (scene_errors_.empty()) scene_errors_.push_back(path + ": scene rejected");
         return;
     }
-    std::string error;
-    if (!session_.open(std::move(*loaded.scene), path, session_.algo(), error)) {
+    // A culler that does not run on the new scene's dimension gives way to one
+    // that does, and the scene panel says so.
+    std::string algo = session_.algo(), why, error;
+    std::string note;
+    if (!algorithmFits(algo, *loaded.scene, why)) {
+        note = why + "; switched to " + kFallbackAlgorithm;
+        algo = kFallbackAlgorithm;
+    }
+    if (!session_.open(std::move(*loaded.scene), path, algo, error)) {
         scene_errors_ = {error};
         return;
     }
     scene_errors_.clear();
+    note_ = note;
     playing_ = false;
     hovered_index_ = -1;
-    lazy_pinned_index_ = -1;  // an id of the scene it was given for
+    algo_names_ = gridcull::algorithmNames(session_.scene().dimensions);
+    if (family_view_) family_view_->sceneChanged();
+    syncFamilyView();
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
+}
+
+void Debugger::selectAlgorithm(const std::string& name) {
+    std::string error;
+    if (!session_.selectAlgorithm(name, error)) {
+        scene_errors_ = {error};
+        return;
+    }
+    note_.clear();
+    syncFamilyView();
 }
 
 void Debugger::apply(const UiActions& actions) {
@@ -177,21 +211,16 @@ void Debugger::apply(const UiActions& actions) {
     }
     const AlgorithmAction& algorithm = actions.algorithm;
     if (algorithm.select_algo && *algorithm.select_algo >= 0 &&
-        *algorithm.select_algo < int(algo_names_.size())) {
-        std::string error;
-        if (!session_.selectAlgorithm(algo_names_[size_t(*algorithm.select_algo)], error))
-            scene_errors_ = {error};
-    }
+        *algorithm.select_algo < int(algo_names_.size()))
+        selectAlgorithm(algo_names_[size_t(*algorithm.select_algo)]);
     if (algorithm.freeze_culling) session_.setCullingCameraFrozen(*algorithm.freeze_culling);
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
-    if (actions.rgvc.view) rgvc_view_ = *actions.rgvc.view;
-    if (actions.lazy_grid.view) lazy_view_ = *actions.lazy_grid.view;
-    if (actions.lazy_grid.cell_size) {
-        CullerOptions options = session_.cullerOptions();
-        options.lazy_cell_size = *actions.lazy_grid.cell_size;
+    if (!actions.family.knobs.empty()) {
+        KnobValues knobs = session_.knobs();
+        for (const auto& [flag, value] : actions.family.knobs) knobs.set(flag, value);
         std::string error;
-        if (!session_.setCullerOptions(options, error)) scene_errors_ = {error};
+        if (!session_.setKnobs(knobs, error)) scene_errors_ = {error};
     }
 }
 
@@ -207,22 +236,17 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.culling_camera = session_.cullingCamera();
     const bool through_camera = throughCullingCamera();
     input.show_culling_camera = !through_camera;
+    input.through_culling_camera = through_camera;
     const WindowRect& v = layout.scene_view;
     input.viewport = {int(v.x * scale), int(v.y * scale), int(v.width * scale),
                       int(v.height * scale)};
     input.framebuffer_height = framebuffer_height;
     input.view = view_camera_.matrices(view_mode_, session_.cullingCamera(),
                                        double(v.width) / std::max(v.height, 1));
-    input.hovered_index = hovered_index_;
-    input.rgvc = session_.rgvcSnapshot();
-    input.rgvc_view = rgvc_view_;
-    // The grid is the culling camera's image, so it lies on the objects only when
-    // the view looks through that camera.
-    input.lazy_grid = through_camera ? session_.lazyGridSnapshot() : nullptr;
-    input.lazy_view = lazy_view_;
-    input.lazy_object = lazyObject();
-    // A picked object is outlined as if it were under the mouse.
-    if (session_.lazyGridSnapshot()) input.hovered_index = lazyObject();
+    const FamilyViewContext context = familyContext();
+    input.hovered_index = family_view_ ? family_view_->focusedObject(context) : hovered_index_;
+    input.family = family_view_.get();
+    input.family_context = &context;
     last_draw_ms_ = renderer_.draw(input);
     session_.recordDrawMs(last_draw_ms_);
 }

@@ -1,8 +1,10 @@
-// The lazy occlusion grid drawing with OpenGL and answering its pixel-level
-// queries with glReadPixels of the depth buffer, as Hey et al. section 7 did
-// ("reading the hardware z-buffer ... with the glReadPixels function"): the
-// `-gl` algorithms of app/app_cullers.h, for `gridcull bench`, so that a query
-// costs what it cost in the paper, a round trip to the GPU.
+// An image target (culling/api/image_target.h) on OpenGL: objects drawn into a
+// framebuffer, each pixel query answered with glReadPixels of the depth buffer,
+// as a GPU implementation of an image-space culler does (Hey, Tobler &
+// Purgathofer measured exactly this, "reading the hardware z-buffer ... with the
+// glReadPixels function"). It backs the `-gl` algorithms of
+// app/app_cullers.h, for `cull` and `bench`, so that a query costs a round trip
+// to the GPU.
 //
 // Objects are drawn depth-only into a width x height framebuffer object with
 // the culling camera's view and projection (Camera::viewMatrix,
@@ -16,9 +18,9 @@
 // Not the oracle's rasterization: OpenGL rasterizes in 32-bit floats with its
 // own edge rule, spheres are facetted and depths 24-bit, so the exact oracle at
 // the same resolution can see an object past an occluder's silhouette that this
-// target's image hides. bench reports such false culls; the
-// conservative guarantee of culling/lazy_grid/lazy_grid_culler.h is for the software
-// target. Needs a current OpenGL 3.3 core context for its whole life.
+// target's image hides. bench reports such false culls; an image-space culler's
+// conservative guarantee is for the software target. Needs a current OpenGL 3.3
+// core context for its whole life.
 #pragma once
 #include <string>
 #include <unordered_map>
@@ -28,7 +30,7 @@
 
 #include "app/gl_objects.h"
 #include "app/offscreen_target.h"
-#include "culling/raster/image_target.h"
+#include "culling/api/image_target.h"
 
 namespace gridcull {
 

@@ -11,14 +11,14 @@
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
 #include "grid/aabb.h"
+#include "ui/debug_draw.h"
 #include "ui/object_state.h"
 
 namespace gridcull {
 
-struct ColorVertex {
-    glm::vec3 position;
-    glm::vec4 color;  // linear RGBA
-};
+// The debug-draw batch's vertex (ui/debug_draw.h), so overlays and these lines
+// share one renderer.
+using ColorVertex = DebugDrawBatch::Vertex;
 
 inline glm::vec4 toRgba(Rgb c, float alpha = 1.0f) { return {c.r, c.g, c.b, alpha}; }
 

@@ -97,9 +97,7 @@ bool Renderer::init(std::string& error) {
     view_projection_location_ = glGetUniformLocation(program_.get(), "u_view_projection");
     eye_location_ = glGetUniformLocation(program_.get(), "u_eye");
     flat_location_ = glGetUniformLocation(program_.get(), "u_flat");
-    if (!line_renderer_.init(error) || !rgvc_overlay_.init(error) ||
-        !lazy_grid_overlay_.init(error))
-        return false;
+    if (!line_renderer_.init(error) || !debug_draw_.init(error)) return false;
 
     std::vector<ShadedVertex> vertices, lod_vertices;
     std::vector<uint32_t> indices, lod_indices;
@@ -331,14 +329,17 @@ double Renderer::draw(const SceneDrawInput& input) {
 
     drawOverlays(input, true);
     drawObjects(input);
-    if (input.rgvc && dimensions_ == 2)
-        rgvc_overlay_.draw(*input.rgvc, input.rgvc_view, glm::mat4(input.view.view_projection));
-    if (input.lazy_grid && dimensions_ == 3) {
+    if (input.family && input.family_context) {
         // Under the outlines of false culls, which must stay findable.
-        const LazyGridSnapshot& lazy = *input.lazy_grid;
-        const ImageFrame frame = cullingImageFrame(input.culling_camera.aspect, r.width, r.height,
-                                                   lazy.width, lazy.height);
-        lazy_grid_overlay_.draw(lazy, input.lazy_view, input.lazy_object, frame, r.width, r.height);
+        OverlayView view;
+        view.view_projection = input.view.view_projection;
+        view.width = r.width;
+        view.height = r.height;
+        view.through_culling_camera = input.through_culling_camera;
+        view.culling_aspect = input.culling_camera.aspect;
+        debug_draw_.batch().clear();
+        input.family->drawOverlay(*input.family_context, view, debug_draw_.batch());
+        debug_draw_.flush(glm::mat4(input.view.view_projection), r.width, r.height);
     }
     drawOverlays(input, false);
 

@@ -9,9 +9,8 @@
 // a sky term. 2D: a top-down map; circles are unit discs, boxes unit squares,
 // polygons triangulated by ear clipping once per scene; flat colours, with the
 // states layered in depth so a false cull is never hidden under a culled shape.
-// 2D with rgvc: its matrices and traversal over the objects (app/rgvc_overlay.h).
-// 3D through the culling camera with a lazy grid culler: its cells over the
-// objects (app/lazy_grid_overlay.h).
+// Over the objects and under the outlines, the selected family's overlay
+// (ui/family_view.h), drawn through the debug-draw interface (app/gl_debug_draw.h).
 //
 // All buffers are sized on setScene() and reused: a steady state allocates
 // nothing per frame. Needs a current GL 3.3 core context for every call.
@@ -22,13 +21,13 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "app/gl_debug_draw.h"
 #include "app/gl_objects.h"
-#include "app/lazy_grid_overlay.h"
 #include "app/line_renderer.h"
-#include "app/rgvc_overlay.h"
 #include "app/view_camera.h"
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
+#include "ui/family_view.h"
 #include "ui/layout.h"
 #include "ui/object_state.h"
 
@@ -41,18 +40,14 @@ struct SceneDrawInput {
     Camera culling_camera;
     bool show_culling_camera = true;  // off when looking through it
     ViewMatrices view;
-    WindowRect viewport;              // window pixels, origin top left
+    WindowRect viewport;              // framebuffer pixels, origin top left
     int framebuffer_height = 0;       // to flip the viewport into GL's bottom-left origin
     int hovered_index = -1;           // outlined when >= 0
-    // 2D rgvc: the culler's state drawn over the objects (null: nothing).
-    const RgvcSnapshot* rgvc = nullptr;
-    RgvcViewState rgvc_view;
-    // 3D, looking through the culling camera with lazy-grid, lazy-grid-z or
-    // busy-grid: its grid over the objects (null: nothing), what of it to show,
-    // and the object (index) whose deciding test it details (-1: none).
-    const LazyGridSnapshot* lazy_grid = nullptr;
-    LazyGridViewState lazy_view;
-    int lazy_object = -1;
+    bool through_culling_camera = false;  // 3D, the view is the culling camera's
+    // The selected family's view, which draws its overlay (null: none), and the
+    // frame as it sees it.
+    FamilyView* family = nullptr;
+    const FamilyViewContext* family_context = nullptr;
 };
 
 class Renderer {
@@ -114,8 +109,7 @@ private:
     std::vector<ColorVertex> fill_;
     std::vector<ColorVertex> highlight_;
     LineRenderer line_renderer_;
-    RgvcOverlay rgvc_overlay_;
-    LazyGridOverlay lazy_grid_overlay_;
+    GlDebugDraw debug_draw_;
 };
 
 }  // namespace gridcull

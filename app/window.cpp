@@ -53,10 +53,9 @@ void printDrawSummary(std::vector<double>& draw_ms) {
 }  // namespace
 
 const char* viewNamesHelp() {
-    return "main (the window: view and panels), scene (the view alone),\n"
-           "                     camera (3D: through the culling camera, no panels) or\n"
-           "                     main-camera (the window, its view through the culling\n"
-           "                     camera); default main";
+    return "main (the window: view and panels), scene (the view alone), camera (3D: "
+           "through the culling camera, no panels) or main-camera (the window, its view "
+           "through the culling camera); default main";
 }
 
 int runWindow(const Scene& scene, const ViewOptions& options) {

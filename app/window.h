@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "culling/api/culler.h"
+#include "culling/api/knobs.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull {
@@ -15,14 +15,10 @@ struct ViewOptions {
     int height = 720;
     int frame = 0;              // first frame shown (shot: the frame drawn)
     std::string view = "main";  // shot: which view to draw, see viewNames()
-    CullerOptions culler;       // passed to every culler the window makes
+    KnobValues knobs;           // every culler the window makes is made with these
+    KnobValues view_flags;      // the families' view flags (ui/registry/family_views.h)
     bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
-    int64_t rgvc_layer = -1;    // rgvc, 2D: traversal shown up to this chess layer (-1: all)
-    int rgvc_occluder = -1;     // rgvc, 2D: the picked extended occluder (-1: none)
-    // lazy / busy grid, 3D: the object (scene id) whose deciding test the overlay
-    // and panel show when nothing is under the mouse (-1: none).
-    int lazy_object = -1;
 };
 
 // The names `shot --view` accepts ("main": the whole window with its panels, ...).

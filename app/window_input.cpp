@@ -14,7 +14,8 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
     const bool over_view = mouse_free && view.contains(io.MousePos.x, io.MousePos.y);
     const bool dimensions3 = debugger.session().scene().dimensions == 3;
 
-    debugger.updateHover(io.MousePos.x, io.MousePos.y, over_view, view);
+    const bool clicked = over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+    debugger.updatePointer(io.MousePos.x, io.MousePos.y, over_view, clicked, view);
 
     ViewCamera& camera = debugger.viewCamera();
     if (mouse_free && io.MouseDown[ImGuiMouseButton_Right]) {
@@ -27,12 +28,6 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
             camera.orbit(dx, dy);
     }
     if (over_view && io.MouseWheel != 0.0f) camera.zoom(io.MouseWheel);
-    if (over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-        if (dimensions3)
-            debugger.pickLazyObject();
-        else
-            debugger.pickRgvcOccluder();
-    }
 
     if (io.WantCaptureKeyboard) return;
     if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) debugger.togglePlay();

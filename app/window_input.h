@@ -13,7 +13,7 @@ class Debugger;
 // Call once per frame after ImGui::NewFrame(). Keys: Space play/pause, Right /
 // Left step, Home first frame, F freeze the culling camera; Fly view: WASD move,
 // Q/E down/up, Shift faster. Mouse: right-drag orbits / looks / pans, the wheel
-// zooms, a left click picks (rgvc: an occluder; lazy grid: the object detailed).
+// zooms, a left click picks (what it picks is the selected family's view's to say).
 void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayout& layout);
 
 }  // namespace gridcull

@@ -1,13 +1,18 @@
 # Modules: one folder, one static library, one list of the modules it may use.
 #
-#   gridcull_module(NAME culling_rgvc DIR culling/rgvc
-#                   DEPENDS culling_api culling_baseline grid
+#   gridcull_module(NAME culling_rgvc DIR culling/rgvc [FLAT]
+#                   DEPENDS culling_api grid             # its headers include them
+#                   PRIVATE_DEPENDS culling_baseline     # only its .cpp files do
 #                   [LINK external targets...] [PRIVATE_LINK ...] [EXCLUDE files...])
 #
-# builds every .cpp under DIR (recursively) into NAME, links DEPENDS, and checks
-# at build time that every project #include "..." in DIR's files names a file of
-# DIR or of a module it depends on (directly or through its dependencies), so
-# that, say, an algorithm family cannot include the oracle or another family.
+# builds every .cpp under DIR (FLAT: in DIR itself, not its subfolders) into
+# NAME and checks at build time that every project #include "..." in DIR's files
+# names a file of DIR, of a module it depends on, or of a module that one
+# exports through its own DEPENDS. PRIVATE_DEPENDS are not passed on: the
+# registry depends privately on every family, so what depends on the registry
+# still cannot include a family. That is how a family's folder is kept from
+# including the oracle or another family, and the window from including a family.
+#
 # gridcull_check_all_built(DIR) fails the configure step when a .cpp under DIR
 # belongs to no module (a file in a new folder would otherwise drop out); a
 # file EXCLUDEd from a module (an executable's main) must be claimed with
@@ -17,29 +22,48 @@ include_guard(GLOBAL)
 set_property(GLOBAL PROPERTY GRIDCULL_MODULE_SOURCES "")
 
 function(gridcull_module)
-  cmake_parse_arguments(M "" "NAME;DIR" "DEPENDS;LINK;PRIVATE_LINK;EXCLUDE" ${ARGN})
-  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.cpp)
+  cmake_parse_arguments(M "FLAT" "NAME;DIR"
+                        "DEPENDS;PRIVATE_DEPENDS;LINK;PRIVATE_LINK;EXCLUDE" ${ARGN})
+  set(glob GLOB_RECURSE)
+  if(M_FLAT)
+    set(glob GLOB)
+  endif()
+  file(${glob} sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.cpp)
+  file(${glob} headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.h)
   foreach(excluded IN LISTS M_EXCLUDE)
     list(REMOVE_ITEM sources ${PROJECT_SOURCE_DIR}/${M_DIR}/${excluded})
   endforeach()
-  file(GLOB_RECURSE headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.h)
   add_library(${M_NAME} STATIC ${sources})
   target_include_directories(${M_NAME} PUBLIC ${PROJECT_SOURCE_DIR})
-  target_link_libraries(${M_NAME} PUBLIC ${M_DEPENDS} ${M_LINK} PRIVATE ${M_PRIVATE_LINK})
+  target_link_libraries(${M_NAME} PUBLIC ${M_DEPENDS} ${M_LINK}
+                        PRIVATE ${M_PRIVATE_DEPENDS} ${M_PRIVATE_LINK})
   set_property(GLOBAL APPEND PROPERTY GRIDCULL_MODULE_SOURCES ${sources})
 
-  # The folders this module may include from: its own and its dependencies'.
-  set(allowed ${M_DIR})
-  foreach(dep IN LISTS M_DEPENDS)
+  # The folders of this module's own files.
+  set(own ${M_DIR})
+  foreach(file IN LISTS sources headers)
+    get_filename_component(folder ${file} DIRECTORY)
+    file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${folder})
+    list(APPEND own ${folder})
+  endforeach()
+  list(REMOVE_DUPLICATES own)
+  # What a module that depends on this one may include from it.
+  set(exported ${own})
+  set(allowed ${own})
+  foreach(dep IN LISTS M_DEPENDS M_PRIVATE_DEPENDS)
     if(TARGET ${dep})
-      get_target_property(dep_allowed ${dep} GRIDCULL_ALLOWED_DIRS)
-      if(dep_allowed)
-        list(APPEND allowed ${dep_allowed})
+      get_target_property(dep_exported ${dep} GRIDCULL_EXPORTED_DIRS)
+      if(dep_exported)
+        list(APPEND allowed ${dep_exported})
+        if(dep IN_LIST M_DEPENDS)
+          list(APPEND exported ${dep_exported})
+        endif()
       endif()
     endif()
   endforeach()
   list(REMOVE_DUPLICATES allowed)
-  set_target_properties(${M_NAME} PROPERTIES GRIDCULL_ALLOWED_DIRS "${allowed}")
+  list(REMOVE_DUPLICATES exported)
+  set_target_properties(${M_NAME} PROPERTIES GRIDCULL_EXPORTED_DIRS "${exported}")
 
   set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${M_NAME}.includes-checked)
   add_custom_command(

@@ -3,7 +3,7 @@
 # Everything comes from apt: nothing is vendored or downloaded by the build.
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config libglfw3-dev libimgui-dev libglm-dev libstb-dev
+packages=(cmake g++ make pkg-config libglfw3-dev libimgui-dev libglm-dev libstb-dev libcli11-dev
           nlohmann-json3-dev libtinyobjloader-dev libgtest-dev libbenchmark-dev
           xvfb xauth libgl1-mesa-dri libegl-dev libgl-dev)
 

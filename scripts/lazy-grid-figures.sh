@@ -89,15 +89,15 @@ sizes="8 12 16 24 32 48 64"
 for scene in forest-walk-3d city-walk-3d; do
     list=""
     for s in $sizes; do
-        list+="${list:+,}busy-grid:cell-size=$s,busy-grid-tight:cell-size=$s,lazy-grid:cell-size=$s"
-        list+=",lazy-grid:cell-size=$s:lazy-prob=0.5"
+        list+="${list:+,}busy-grid:lazy-cell-size=$s,busy-grid-tight:lazy-cell-size=$s"
+        list+=",lazy-grid:lazy-cell-size=$s,lazy-grid:lazy-cell-size=$s:lazy-prob=0.5"
     done
     echo "== $scene: cell sizes $sizes at 640"
     bench "$out/$scene-cell-size.txt" "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" \
         --oracle-res 640
     # Rows: label median ... pvs/exact (7th) ... pixel_queries=Q among the counters.
-    awk '$1 ~ /cell-size=/ {
-            split($1, a, "cell-size="); split(a[2], b, ":"); kind = $1; sub(/:cell-size=[0-9]+/, "", kind)
+    awk '$1 ~ /lazy-cell-size=/ {
+            split($1, a, "lazy-cell-size="); split(a[2], b, ":"); kind = $1; sub(/:lazy-cell-size=[0-9]+/, "", kind)
             q = ""; for (i = 11; i <= NF; ++i) if ($i ~ /^pixel_queries=/) { q = $i; sub(/.*=/, "", q) }
             print kind, b[1], $2, q, $7 }' "$out/$scene-cell-size.txt" >"$tmp/cells.dat"
     for kind in busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5; do

@@ -9,8 +9,8 @@
 
 namespace gridcull {
 
-UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
-                         const WindowLayout& layout) {
+UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const WindowLayout& layout,
+                         FamilyView* family, const FamilyViewContext& family_context) {
     assert(snapshot.scene && snapshot.algo_names && snapshot.result && snapshot.exact &&
            snapshot.false_culled && snapshot.history && snapshot.scene_file &&
            snapshot.scene_errors);
@@ -28,10 +28,8 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
         actions.scene = drawScenePanel(snapshot, state.scene);
         actions.playback = drawPlaybackPanel(snapshot);
         actions.algorithm = drawAlgorithmPanel(snapshot);
-        // rgvc's and the lazy grid's own views right under the culler that fills
-        // them (nothing otherwise).
-        actions.rgvc = drawRgvcPanel(snapshot);
-        actions.lazy_grid = drawLazyGridPanel(snapshot, state.lazy_grid);
+        // The family's own panel right under the culler that fills it.
+        if (family) family->drawPanel(family_context, actions.family);
         drawStatsPanel(snapshot, state.stats);
         drawHoverPanel(snapshot);
         drawLegendPanel(snapshot);

@@ -1,14 +1,13 @@
 // All the debugger's panels for one frame, in one column at a fixed place on the
-// right: scene, playback, algorithm and cameras, statistics, the object under
-// the mouse, legend. Returns what the user asked for;
-// the app applies it after the frame.
+// right: scene, playback, algorithm and cameras, the selected family's own panel
+// (ui/family_view.h), statistics, the object under the mouse, legend. Returns
+// what the user asked for; the app applies it after the frame.
 #pragma once
 #include "ui/algorithm_panel.h"
+#include "ui/family_view.h"
 #include "ui/frame_snapshot.h"
 #include "ui/layout.h"
-#include "ui/lazy_grid/lazy_grid_panel.h"
 #include "ui/playback_panel.h"
-#include "ui/rgvc/rgvc_panel.h"
 #include "ui/scene_panel.h"
 #include "ui/stats_panel.h"
 
@@ -18,20 +17,20 @@ namespace gridcull {
 struct UiState {
     StatsPanelState stats;
     ScenePanelState scene;
-    LazyGridPanelState lazy_grid;
 };
 
 struct UiActions {
     PlaybackAction playback;
     AlgorithmAction algorithm;
     SceneAction scene;
-    RgvcAction rgvc;
-    LazyGridAction lazy_grid;
+    FamilyAction family;
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the
-// snapshot's pointers are all set.
-UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state,
-                         const WindowLayout& layout);
+// snapshot's pointers are all set. `family` is the selected algorithm's family
+// view (null for a family without one), drawn with `family_context`.
+UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const WindowLayout& layout,
+                         FamilyView* family = nullptr,
+                         const FamilyViewContext& family_context = {});
 
 }  // namespace gridcull

@@ -8,9 +8,8 @@
 #include "culling/api/culler.h"
 #include "culling/scene/scene.h"
 #include "grid/aabb.h"
-#include "ui/lazy_grid/lazy_grid_view.h"
 #include "ui/object_state.h"
-#include "ui/rgvc/rgvc_view.h"
+#include "ui/view_mode.h"
 
 namespace gridcull {
 
@@ -25,13 +24,6 @@ struct FrameHistory {
 
     // Sizes every series to `frames` slots of 0 (allocates only when it grows).
     void resize(int frames);
-};
-
-// How the 3D / 2D view looks at the scene.
-enum class ViewMode {
-    Overview,       // 3D: orbit around the world (right-drag, wheel); 2D: top-down map
-    Fly,            // 3D: free observer camera (WASD, right-drag to look)
-    CullingCamera,  // 3D: look through the culling camera
 };
 
 // The object under the mouse in the 3D / 2D view.
@@ -51,8 +43,10 @@ struct FrameSnapshot {
     double t = 0.0;
     bool playing = false;
 
-    const std::vector<std::string>* algo_names = nullptr;  // cullerNames()
-    int algo_index = 0;                                    // into algo_names
+    // The algorithms the window offers for this scene (those of the registry that
+    // run on its dimension), and the selected one.
+    const std::vector<std::string>* algo_names = nullptr;
+    int algo_index = 0;  // into algo_names
     const FrameResult* result = nullptr;  // the selected culler at `frame`
     const FrameResult* exact = nullptr;   // the oracle at `frame`
     const std::vector<int>* false_culled = nullptr;  // ids, ascending
@@ -67,22 +61,9 @@ struct FrameSnapshot {
 
     const std::string* scene_file = nullptr;                // "" for the built-in scene
     const std::vector<std::string>* scene_errors = nullptr;  // of the last failed open
-
-    // rgvc in a 2D scene: the culler's last frame (null otherwise), what the view
-    // shows of it, and the voxel under the mouse (null when there is none).
-    const RgvcSnapshot* rgvc = nullptr;
-    RgvcViewState rgvc_view;
-    const RgvcVoxelInfo* rgvc_voxel = nullptr;
-
-    // lazy-grid, lazy-grid-z or busy-grid in a 3D scene: the culler's last frame
-    // (null otherwise), what the overlay shows of it, and the object (index into
-    // scene->objects, -1: none) whose deciding test the panel details: the one
-    // under the mouse, else the one picked by a click or `shot --lazy-object`
-    // (`pinned`).
-    const LazyGridSnapshot* lazy_grid = nullptr;
-    LazyGridViewState lazy_view;
-    int lazy_object = -1;
-    bool lazy_object_pinned = false;
+    // What the window did on its own that the user should know, e.g. that opening
+    // a 2D scene switched the culler from a 3D-only one ("" for nothing).
+    const std::string* note = nullptr;
 };
 
 }  // namespace gridcull

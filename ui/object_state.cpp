@@ -26,14 +26,14 @@ Rgb objectStateColor(ObjectState state) {
     // Okabe-Ito blue, sky blue and vermillion stay apart for every common colour
     // vision deficiency; culled objects are a dim neutral grey so they recede.
     switch (state) {
-    case ObjectState::Visible: return {0.00f, 0.45f, 0.70f};
-    case ObjectState::Hidden: return {0.34f, 0.71f, 0.91f};
-    case ObjectState::Culled: return {0.36f, 0.36f, 0.38f};
-    case ObjectState::FalseCulled: return {0.84f, 0.37f, 0.00f};
+    case ObjectState::Visible: return swatchColor(Swatch::Blue);
+    case ObjectState::Hidden: return swatchColor(Swatch::SkyBlue);
+    case ObjectState::Culled: return swatchColor(Swatch::DimGrey);
+    case ObjectState::FalseCulled: return swatchColor(Swatch::Vermillion);
     }
-    return {1.0f, 1.0f, 1.0f};
+    return swatchColor(Swatch::White);
 }
 
-Rgb cullingCameraColor() { return {0.94f, 0.89f, 0.26f}; }  // Okabe-Ito yellow
+Rgb cullingCameraColor() { return swatchColor(Swatch::Yellow); }
 
 }  // namespace gridcull

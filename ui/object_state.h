@@ -1,9 +1,11 @@
 // What the debugger knows about one object at one frame, from comparing the
 // selected culler's PVS with the exact visible set of the oracle, and the
-// colour-blind-safe colours (Okabe & Ito, "Color Universal Design") that the
-// renderer, the legend and the hover panel all use for it and for the camera.
+// colours (from ui/palette.h) that the renderer, the legend and the hover panel
+// all use for it and for the camera.
 #pragma once
 #include <cstdint>
+
+#include "ui/palette.h"
 
 namespace gridcull {
 
@@ -19,10 +21,6 @@ const char* objectStateName(ObjectState state);  // "visible", "hidden", "culled
 // One line saying what the state means, for the legend.
 const char* objectStateMeaning(ObjectState state);
 
-// Linear RGB in [0, 1].
-struct Rgb {
-    float r, g, b;
-};
 Rgb objectStateColor(ObjectState state);
 // The colour the culling camera's frustum (3D) or view wedge (2D) is drawn in.
 Rgb cullingCameraColor();

@@ -39,6 +39,12 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
         for (const std::string& message : errors) ImGui::TextWrapped("%s", message.c_str());
         ImGui::PopStyleColor();
     }
+    if (snapshot.note && !snapshot.note->empty()) {
+        const Rgb c = cullingCameraColor();  // the window's own voice: the camera's yellow
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r, c.g, c.b, 1.0f));
+        ImGui::TextWrapped("%s", snapshot.note->c_str());
+        ImGui::PopStyleColor();
+    }
     return action;
 }
 

@@ -24,11 +24,4 @@ public:
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
 };
 
-// The single tests, for reuse and for tests. `t`-independent: pass bounds at t.
-// 3D: may the box intersect the camera's frustum?
-bool boxMayIntersectFrustum(const Aabb& box, const Camera& camera);
-// 2D: may the circle / the x-y box intersect the camera's wedge?
-bool circleMayIntersectWedge(const glm::dvec3& center, double radius, const Camera& camera);
-bool boxMayIntersectWedge(const Aabb& box, const Camera& camera);
-
 }  // namespace gridcull

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "culling/raster/image_target.h"
+#include "culling/api/image_target.h"
 
 namespace gridcull {
 

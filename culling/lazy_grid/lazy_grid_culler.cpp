@@ -4,16 +4,19 @@
 #include <cassert>
 
 #include "culling/scene/object_triangles.h"
-#include "culling/baseline/vfc_culler.h"
+#include "culling/baseline/frustum_tests.h"
 
 namespace gridcull {
 
+const DebugSnapshotKind LazyGridSnapshot::kKind{"lazy-grid"};
+
 LazyGridCuller::LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update,
-                               const CullerOptions& options, std::unique_ptr<ImageTarget> target,
-                               std::string name)
+                               const LazyGridOptions& options, int reference_resolution,
+                               std::unique_ptr<ImageTarget> target, std::string name)
     : variant_(variant),
       update_(update),
       options_(options),
+      resolution_(options.resolution > 0 ? options.resolution : reference_resolution),
       target_(target ? std::move(target) : std::make_unique<SoftwareImageTarget>()),
       name_(std::move(name)) {
     assert(variant == LazyGridVariant::OcclusionBuffer || update == LazyGridUpdate::Lazy);
@@ -26,18 +29,8 @@ const char* LazyGridCuller::name() const {
     return variant_ == LazyGridVariant::ZBuffer ? "lazy-grid-z" : "lazy-grid";
 }
 
-bool LazyGridCuller::supports(const Scene& scene, std::string& why) const {
-    if (scene.dimensions == 3) return true;
-    why = std::string(name()) +
-          " works in screen space and needs a 3D scene (this one is 2D); try rgvc or vfc";
-    return false;
-}
-
-void LazyGridCuller::imageSize(const CullerOptions& options, double aspect, int& width,
-                               int& height) {
-    const int resolution =
-        options.lazy_resolution > 0 ? options.lazy_resolution : options.oracle_resolution;
-    imageSizeForAspect(resolution, aspect, width, height);
+void LazyGridCuller::imageSize(double aspect, int& width, int& height) const {
+    imageSizeForAspect(resolution_, aspect, width, height);
 }
 
 void LazyGridCuller::reset(const Scene& scene) {
@@ -54,18 +47,18 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
     out.stats = CullStats{};
     out.pvs.clear();
     snapshot_.valid = false;
-    if (scene.dimensions != 3) return;  // supports() says why
+    if (scene.dimensions != 3) return;  // the registry offers it for 3D scenes only
     assert(bvh_.objectOrder().size() == scene.objects.size() && "reset() with this scene first");
 
     int width, height;
-    imageSize(options_, camera.aspect, width, height);
+    imageSize(camera.aspect, width, height);
     mapping_.set(camera, width, height);
     const bool occlusion_buffer = variant_ == LazyGridVariant::OcclusionBuffer;
     target_->begin(camera, width, height, occlusion_buffer);
-    const LazyGridExtensions extensions{options_.lazy_probability_threshold,
-                                        options_.lazy_border_whole_fraction,
-                                        options_.lazy_large_box_fraction};
-    grid_.configure(width, height, std::max(1, options_.lazy_cell_size), variant_, update_,
+    const LazyGridExtensions extensions{options_.probability_threshold,
+                                        options_.border_whole_fraction,
+                                        options_.large_box_fraction};
+    grid_.configure(width, height, std::max(1, options_.cell_size), variant_, update_,
                     extensions);
     grid_.begin(target_.get());
 
@@ -100,7 +93,7 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
     out.stats.set(Counter::NodesVisited, nodes_visited_);
     out.stats.set(Counter::TrianglesDrawn, triangles_drawn_);
     out.stats.set(Counter::BvhRebuilds, bvh_.rebuilds() - rebuilds_before);
-    if (options_.lazy_probability_threshold > 0.0)
+    if (options_.probability_threshold > 0.0)
         out.stats.set(Counter::ProbabilitySkips, c.probability_skips);
     if (snapshot_enabled_) fillSnapshot();
 }

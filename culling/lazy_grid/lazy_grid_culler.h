@@ -36,7 +36,7 @@
 // - The view's resolution is CullerOptions::lazy_resolution pixels on the long
 //   side (0: the oracle's), the other side from the camera's aspect.
 //
-// Conservative at the resolution it renders: with lazy_resolution equal to the
+// Conservative at the resolution it renders: with --lazy-res equal to the
 // oracle's, the PVS contains every object the oracle sees (same pixel centres,
 // same depths; the differential tests check this). At another resolution an
 // object seen only between this image's pixel centres may be dropped, as any
@@ -56,7 +56,8 @@
 #include "culling/lazy_grid/bounding_volume_hierarchy.h"
 #include "culling/api/culler.h"
 #include "culling/lazy_grid/lazy_grid.h"
-#include "culling/raster/image_target.h"
+#include "culling/lazy_grid/lazy_grid_options.h"
+#include "culling/raster/software_image_target.h"
 #include "culling/raster/screen_mapping.h"
 #include "culling/lazy_grid/lazy_grid_snapshot.h"
 
@@ -64,24 +65,31 @@ namespace gridcull {
 
 class LazyGridCuller final : public Culler {
 public:
-    // Draws into the software buffers (SoftwareImageTarget) unless given another
-    // target, e.g. the app's OpenGL one; `name` then replaces name() ("" keeps it).
-    LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update, const CullerOptions& options,
+    // `reference_resolution` is the image side used when options.resolution is
+    // 0 (the oracle's, so false culls compare like with like). Draws into the
+    // software buffers (SoftwareImageTarget) unless given another target, e.g.
+    // the app's OpenGL one; `name` then replaces name() ("" keeps it).
+    LazyGridCuller(LazyGridVariant variant, LazyGridUpdate update,
+                   const LazyGridOptions& options = {},
+                   int reference_resolution = kDefaultImageResolution,
                    std::unique_ptr<ImageTarget> target = nullptr, std::string name = "");
     const char* name() const override;
-    bool supports(const Scene& scene, std::string& why) const override;
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
 
-    const CullerOptions& options() const { return options_; }
+    const LazyGridOptions& options() const { return options_; }
     // Fill snapshot() each frame from now on (off by default).
-    void setSnapshotEnabled(bool enabled) { snapshot_enabled_ = enabled; }
+    void setDebugCapture(bool on) override { snapshot_enabled_ = on; }
+    const DebugSnapshot* debugSnapshot() const override {
+        return snapshot_.valid ? &snapshot_ : nullptr;
+    }
     const LazyGridSnapshot& snapshot() const { return snapshot_; }
     const LazyOcclusionGrid& grid() const { return grid_; }
 
-    // The image size for a camera: long side = resolution (lazy_resolution, or
-    // the oracle's when 0).
-    static void imageSize(const CullerOptions& options, double aspect, int& width, int& height);
+    // The image side used: options.resolution, or the reference when 0.
+    int resolution() const { return resolution_; }
+    // The image size for a camera of `aspect`: long side = resolution().
+    void imageSize(double aspect, int& width, int& height) const;
 
 private:
     struct ListEntry {
@@ -106,7 +114,8 @@ private:
 
     LazyGridVariant variant_;
     LazyGridUpdate update_;
-    CullerOptions options_;
+    LazyGridOptions options_;
+    int resolution_ = kDefaultImageResolution;
     BoundingVolumeHierarchy bvh_;
     ScreenMapping mapping_;
     std::unique_ptr<ImageTarget> target_;

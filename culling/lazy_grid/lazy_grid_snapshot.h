@@ -4,13 +4,14 @@
 // tested with its rectangle, znear, result, deciding step and the cells it
 // touched; each object drawn with its zfar), and the BVH's boxes.
 //
-// Filled only while LazyGridCuller::setSnapshotEnabled(true); otherwise only
+// Filled only while LazyGridCuller::setDebugCapture(true); otherwise only
 // `valid` (false) is kept, so culling pays nothing for it. Everything is owned by
 // the snapshot. Object numbers are indices into Scene::objects.
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "culling/api/debug_snapshot.h"
 #include "culling/lazy_grid/bounding_volume_hierarchy.h"
 #include "culling/lazy_grid/lazy_grid.h"
 
@@ -34,7 +35,10 @@ struct LazyGridEvent {
     PixelRect written;   // Draw: the pixels the draw may have written
 };
 
-struct LazyGridSnapshot {
+struct LazyGridSnapshot final : DebugSnapshot {
+    static const DebugSnapshotKind kKind;
+    LazyGridSnapshot() : DebugSnapshot(kKind) {}
+
     bool valid = false;
     LazyGridVariant variant = LazyGridVariant::OcclusionBuffer;
     LazyGridUpdate update = LazyGridUpdate::Lazy;

@@ -5,10 +5,9 @@
 
 namespace gridcull {
 
-ExactOracle::ExactOracle(const CullerOptions& options) : options_(options) {
-    options_.oracle_resolution = std::clamp(options_.oracle_resolution, 1, kMaxOracleResolution);
-    options_.oracle_rays_per_turn =
-        std::clamp(options_.oracle_rays_per_turn, 1, kMaxOracleRaysPerTurn);
+ExactOracle::ExactOracle(const OracleOptions& options) : options_(options) {
+    options_.resolution = std::clamp(options_.resolution, 1, kMaxOracleResolution);
+    options_.rays_per_turn = std::clamp(options_.rays_per_turn, 1, kMaxOracleRaysPerTurn);
 }
 
 void ExactOracle::imageSize(int resolution, double aspect, int& width, int& height) {
@@ -30,11 +29,11 @@ void ExactOracle::reset(const Scene& scene) {
         if (object.mesh) largest_mesh = std::max(largest_mesh, object.mesh->vertices.size());
     id_buffer_.reserveMeshVertices(largest_mesh);
     if (scene.dimensions == 2) {
-        sweep_.resize(rayCount(options_.oracle_rays_per_turn, scene.camera.fov_deg),
+        sweep_.resize(rayCount(options_.rays_per_turn, scene.camera.fov_deg),
                       scene.camera.fov_deg);
     } else {
         int width, height;
-        imageSize(options_.oracle_resolution, scene.camera.aspect, width, height);
+        imageSize(options_.resolution, scene.camera.aspect, width, height);
         id_buffer_.resize(width, height);
     }
 }
@@ -58,7 +57,7 @@ void ExactOracle::cull(const Scene& scene, const Camera& camera, double t, Frame
 
 void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
     int width, height;
-    imageSize(options_.oracle_resolution, camera.aspect, width, height);
+    imageSize(options_.resolution, camera.aspect, width, height);
     id_buffer_.resize(width, height);
     id_buffer_.begin(camera);
 
@@ -101,7 +100,7 @@ void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, Fra
 }
 
 void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
-    sweep_.resize(rayCount(options_.oracle_rays_per_turn, camera.fov_deg), camera.fov_deg);
+    sweep_.resize(rayCount(options_.rays_per_turn, camera.fov_deg), camera.fov_deg);
     sweep_.begin(camera);
 
     for (size_t i = 0; i < scene.objects.size(); ++i) {

@@ -5,13 +5,13 @@
 // state between frames, and never over-estimates by design.
 //
 // 3D: an object-ID buffer (culling/raster/id_depth_buffer.h) of
-// CullerOptions::oracle_resolution pixels on the long side, the other side from
+// OracleOptions::resolution (--oracle-res) pixels on the long side, the other side from
 // the camera's aspect (1024 x 576 at 16:9 by default), sampled at pixel centres,
 // depth = view-space distance along the forward axis, only [near, far] counts.
 // Spheres and boxes are intersected exactly per pixel, meshes rasterized exactly
 // per pixel centre (near-plane clipped, perspective-correct depth, two-sided).
 // 2D: an angular sweep (culling/oracle/exact_oracle_sweep.h) of
-// max(64, ceil(fov / 360 * CullerOptions::oracle_rays_per_turn)) rays over the
+// max(64, ceil(fov / 360 * OracleOptions::rays_per_turn (--oracle-rays))) rays over the
 // wedge, at the centres of equal angular bins, exact against circles, boxes and
 // polygons, cut at far.
 //
@@ -44,27 +44,21 @@
 #include <vector>
 
 #include "culling/api/culler.h"
+#include "culling/oracle/oracle_options.h"
 #include "culling/raster/id_depth_buffer.h"
 #include "culling/oracle/exact_oracle_sweep.h"
 
 namespace gridcull {
 
-// The largest options the oracle honours, so that a flag can never ask it for
-// more memory than a desktop has: 8192 x 4608 pixels take about 470 MiB (depth,
-// id and parity per pixel), 2^22 rays about 64 MiB. Command lines should reject
-// larger values with a message; the oracle clamps them.
-constexpr int kMaxOracleResolution = kMaxImageResolution;
-constexpr int kMaxOracleRaysPerTurn = 1 << 22;
-
 class ExactOracle final : public Culler {
 public:
     // Options are clamped to [1, kMaxOracleResolution] and [1, kMaxOracleRaysPerTurn].
-    explicit ExactOracle(const CullerOptions& options);
+    explicit ExactOracle(const OracleOptions& options = {});
     const char* name() const override { return "exact"; }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
 
-    // The buffer size used for a camera: long side = oracle_resolution.
+    // The buffer size used for a camera: long side = `resolution`.
     static void imageSize(int resolution, double aspect, int& width, int& height);
     // The ray count used for a 2D wedge of fov_deg.
     static int rayCount(int rays_per_turn, double fov_deg);
@@ -75,7 +69,7 @@ private:
     // Fills out.pvs from the indices marked in seen_, sorted by id.
     void collect(const Scene& scene, FrameResult& out);
 
-    CullerOptions options_;
+    OracleOptions options_;
     IdDepthBuffer id_buffer_;
     OracleAngularSweep sweep_;
     std::vector<std::pair<double, int>> order_;  // (nearest possible depth, object index)

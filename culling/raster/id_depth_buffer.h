@@ -48,6 +48,9 @@ namespace gridcull {
 // option can ask for more memory than a desktop has: 8192 x 4608 pixels take
 // about 470 MiB (depth, id and parity per pixel).
 constexpr int kMaxImageResolution = 8192;
+// The default long side of the software images (the oracle's, and so the
+// image-space cullers' that follow it).
+constexpr int kDefaultImageResolution = 1024;
 
 // The size of an image over a camera of `aspect` (width / height) with
 // `long_side` pixels on its long side (clamped to [1, kMaxImageResolution]) and

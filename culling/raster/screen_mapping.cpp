@@ -9,10 +9,6 @@
 
 namespace gridcull {
 
-PixelRect PixelRect::intersect(const PixelRect& r) const {
-    return {std::max(x0, r.x0), std::max(y0, r.y0), std::min(x1, r.x1), std::min(y1, r.y1)};
-}
-
 void ScreenMapping::set(const Camera& camera, int width, int height) {
     camera.basis(right_, up_, forward_);
     eye_ = camera.position;

@@ -12,21 +12,11 @@
 #pragma once
 #include <glm/vec3.hpp>
 
+#include "culling/api/pixel_rect.h"
 #include "culling/scene/camera.h"
 #include "grid/aabb.h"
 
 namespace gridcull {
-
-// Inclusive pixel rectangle [x0, x1] x [y0, y1]; empty when x0 > x1 or y0 > y1.
-struct PixelRect {
-    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
-    bool empty() const { return x0 > x1 || y0 > y1; }
-    long long area() const { return empty() ? 0 : (long long)(x1 - x0 + 1) * (y1 - y0 + 1); }
-    bool contains(const PixelRect& r) const {
-        return r.x0 >= x0 && r.x1 <= x1 && r.y0 >= y0 && r.y1 <= y1;
-    }
-    PixelRect intersect(const PixelRect& r) const;
-};
 
 // A box as the grid sees it.
 struct BoxOnScreen {

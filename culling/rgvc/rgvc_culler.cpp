@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "culling/baseline/vfc_culler.h"
+#include "culling/baseline/frustum_tests.h"
 #include "grid/chess_ring.h"
 
 namespace gridcull {
@@ -61,15 +61,11 @@ double boundingRadiusOf(const SceneObject& object) {
 
 }  // namespace
 
-RgvcCuller::RgvcCuller(const CullerOptions& options) : options_(options) {
-    if (!(options_.rgvc_validity_s > 0.0) || !std::isfinite(options_.rgvc_validity_s))
-        options_.rgvc_validity_s = 0.5;
-}
+const DebugSnapshotKind RgvcSnapshot::kKind{"rgvc"};
 
-bool RgvcCuller::supports(const Scene& scene, std::string& why) const {
-    if (scene.dimensions == 2) return true;
-    why = "3D regular-grid culling is not implemented yet (issue 3 covers 2D)";
-    return false;
+RgvcCuller::RgvcCuller(const RgvcOptions& options) : options_(options) {
+    if (!(options_.validity_s > 0.0) || !std::isfinite(options_.validity_s))
+        options_.validity_s = RgvcOptions{}.validity_s;
 }
 
 void RgvcCuller::reset(const Scene& scene) {
@@ -80,12 +76,12 @@ void RgvcCuller::reset(const Scene& scene) {
     grid_ = scene.grid;
     snapshot_ = RgvcSnapshot{};
     if (scene.dimensions != 2) return;
-    if (options_.rgvc_grid_resolution > 0) {
+    if (options_.grid_resolution > 0) {
         const glm::dvec3 extent = grid_.world.extent();
         const double longest = std::max(extent.x, extent.y);
         glm::ivec3 res{1, 1, 1};
         for (int axis = 0; axis < 2; ++axis)
-            res[axis] = std::max(1, int(std::lround(options_.rgvc_grid_resolution * extent[axis] / longest)));
+            res[axis] = std::max(1, int(std::lround(options_.grid_resolution * extent[axis] / longest)));
         if (checkResolution(2, res).empty()) grid_.resolution = res;
     }
     voxel_size_ = grid_.voxelSize();
@@ -134,8 +130,9 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     out.pvs.clear();
     out.stats = CullStats{};
     if (scene.dimensions != 2) {
-        // Not supported (see supports()): view-frustum culling of the bounds, which
-        // is conservative, for callers that cull anyway.
+        // 3D is not implemented (the registry offers rgvc for 2D scenes only):
+        // view-frustum culling of the bounds, which is conservative, for callers
+        // that cull anyway.
         for (const SceneObject& object : scene.objects)
             if (boxMayIntersectFrustum(scene.boundsAt(object, t), camera)) out.pvs.push_back(object.id);
         std::sort(out.pvs.begin(), out.pvs.end());

@@ -39,7 +39,7 @@
 //  - A TBV whose digital circle would leave the grid is not written into T but
 //    kept in a list and revealed when its disc touches the frustum (a ray could
 //    otherwise reach the object around the outside of the grid).
-//  - TBV validity: rgvc_validity_s, shortened (as the paper suggests) so that the
+//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the paper suggests) so that the
 //    circle leaves the viewer's voxel outside; when even one frame's validity
 //    would not, the TBV is written filled. When the viewer's voxel jumps by more
 //    than one voxel between frames (a teleport: the 8-connected path condition
@@ -56,8 +56,9 @@
 // Counters: voxels_visited (frustum voxels reached by the traversal, occluded or
 // not), tbv_created, tbv_expired, tbv_revealed, object_updates (dynamic objects
 // written into O and I this frame).
-// 3D scenes are not supported (supports() says why); cull() then falls back to
-// view-frustum culling of the objects' bounds (as `vfc`), which is conservative.
+// 3D scenes are not supported (the registry offers rgvc for 2D only); cull()
+// then falls back to view-frustum culling of the objects' bounds (as `vfc`),
+// which is conservative.
 // Cost per frame: O(dynamic objects) bookkeeping + O(voxels visited) + the
 // discretization of the PVS objects + one occlusion rasterization per occluder.
 // Buffers are sized in reset(); a steady state allocates nothing.
@@ -69,6 +70,7 @@
 
 #include "culling/api/culler.h"
 #include "culling/rgvc/rgvc_frustum.h"
+#include "culling/rgvc/rgvc_options.h"
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/rgvc/rgvc_tbv.h"
 #include "grid/bit_matrix.h"
@@ -80,15 +82,17 @@ namespace gridcull {
 
 class RgvcCuller final : public Culler {
 public:
-    explicit RgvcCuller(const CullerOptions& options);
+    explicit RgvcCuller(const RgvcOptions& options = {});
     const char* name() const override { return "rgvc"; }
-    bool supports(const Scene& scene, std::string& why) const override;
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
 
     // Fill snapshot() each frame from now on (off by default: it costs a vector
     // entry per visited voxel).
-    void setSnapshotEnabled(bool enabled) { snapshot_enabled_ = enabled; }
+    void setDebugCapture(bool on) override { snapshot_enabled_ = on; }
+    const DebugSnapshot* debugSnapshot() const override {
+        return snapshot_.valid ? &snapshot_ : nullptr;
+    }
     bool snapshotEnabled() const { return snapshot_enabled_; }
     const RgvcSnapshot& snapshot() const { return snapshot_; }
     // The grid this culler uses (the scene's, or the resolution override).
@@ -127,7 +131,7 @@ private:
     void addToPvs(int index);
     void fillSnapshotFrame(const Camera& camera);
 
-    CullerOptions options_;
+    RgvcOptions options_;
     bool ready_ = false;
     size_t object_count_ = 0;
     RegularGrid grid_;

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "culling/rgvc/rgvc_culler.h"
-#include "culling/baseline/vfc_culler.h"
+#include "culling/baseline/frustum_tests.h"
 #include "grid/conservative_raster.h"
 
 namespace gridcull {
@@ -92,7 +92,7 @@ void RgvcCuller::createTbv(const Scene& scene, int index) {
     const double base = bound_radius_[size_t(index)];
     // A hair of extra radius so that rounding never leaves the object outside.
     const double pad = 1e-9 * std::max({voxel_size_.x, voxel_size_.y, base});
-    double validity = speed > 0.0 ? options_.rgvc_validity_s : std::numeric_limits<double>::infinity();
+    double validity = speed > 0.0 ? options_.validity_s : std::numeric_limits<double>::infinity();
     b.centre = object.anchor + scene.displacementAt(object, t_);
     b.radius = base + (speed > 0.0 ? speed * validity : 0.0) + pad;
     b.curve = tbvCurveFor(grid_, b.centre, b.radius);

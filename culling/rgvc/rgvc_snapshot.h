@@ -4,7 +4,7 @@
 // layer, the seed voxels, the extended occluders with their four extension steps
 // and occlusion polygons, and the TBVs.
 //
-// Filled only while RgvcCuller::setSnapshotEnabled(true); otherwise only
+// Filled only while RgvcCuller::setDebugCapture(true); otherwise only
 // `valid` (false) and `memory` are kept, so culling pays nothing for it. The
 // matrix pointers point into the culler and stay valid until its next cull()
 // or reset(); everything else is owned by the snapshot. Ids in the matrices are
@@ -18,6 +18,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "culling/api/debug_snapshot.h"
 #include "culling/rgvc/rgvc_occlusion.h"
 #include "grid/bit_matrix.h"
 #include "grid/id_list_matrix.h"
@@ -80,7 +81,10 @@ struct RgvcMatrixMemory {
     }
 };
 
-struct RgvcSnapshot {
+struct RgvcSnapshot final : DebugSnapshot {
+    static const DebugSnapshotKind kKind;
+    RgvcSnapshot() : DebugSnapshot(kKind) {}
+
     bool valid = false;
     int64_t frame = 0;  // frames culled since reset, the first is 1
     double t = 0.0;

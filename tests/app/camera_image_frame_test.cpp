@@ -1,9 +1,9 @@
 // Where the culling camera's image, and so each lazy grid cell, lies in the view
-// through the culling camera (app/camera_image_frame.h, app/lazy_grid_overlay.h):
+// through the culling camera (ui/image_frame.h, ui/lazy_grid/lazy_grid_overlay.h):
 // the cells tile the image, the image fills a view of the camera's aspect and is
 // centred with bars in any other, and every pixel centre lands where the view
 // camera's own projection draws what that pixel sees.
-#include "app/camera_image_frame.h"
+#include "ui/image_frame.h"
 
 #include <cmath>
 
@@ -11,7 +11,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "app/lazy_grid_overlay.h"
+#include "ui/lazy_grid/lazy_grid_overlay.h"
 #include "app/view_camera.h"
 #include "culling/scene/camera.h"
 

@@ -12,6 +12,7 @@
 
 #include "culling/scene/camera.h"
 #include "culling/api/culler.h"
+#include "culling/registry/registry.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull::test {
@@ -137,9 +138,9 @@ inline std::vector<int> cullIds(Culler& culler, const Scene& scene, double t = 0
 }
 
 inline std::unique_ptr<Culler> makeOrDie(const std::string& name,
-                                         const CullerOptions& options = CullerOptions{}) {
+                                         const KnobValues& knobs = KnobValues{}) {
     std::string error;
-    auto culler = makeCuller(name, options, error);
+    auto culler = makeCuller(name, knobs, error);
     if (!culler) std::abort();
     return culler;
 }

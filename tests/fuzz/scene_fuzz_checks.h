@@ -7,7 +7,7 @@
 //    is what the loader promises (dimensions, frames, dt, near < far, a camera
 //    path, a resolution within the voxel budget, unique ids that indexOf finds,
 //    finite object bounds).
-//  - checkCulling: every algorithm of cullerNames() whose supports() holds runs
+//  - checkCulling: every algorithm the registry offers for the scene's dimension runs
 //    the first, second and last frame (the oracle at a coarse 32 pixels / 256
 //    rays); every PVS is sorted and unique and contains the oracle's. Only for
 //    small scenes (fuzzScenesSmallEnoughToCull): culling costs grow with
@@ -24,6 +24,7 @@
 
 #include "culling/api/culler.h"
 #include "culling/io/scene_loader.h"
+#include "culling/registry/registry.h"
 
 namespace gridcull::fuzz {
 
@@ -77,9 +78,9 @@ inline bool smallEnoughToCull(const Scene& scene) {
 }
 
 inline std::string checkCulling(const Scene& scene) {
-    CullerOptions options;
-    options.oracle_resolution = 32;
-    options.oracle_rays_per_turn = 256;
+    KnobValues options;
+    options.set("oracle-res", 32);
+    options.set("oracle-rays", 256);
     std::string error;
     std::unique_ptr<Culler> oracle = makeCuller("exact", options, error);
     if (!oracle) return "cannot make the oracle: " + error;
@@ -97,11 +98,9 @@ inline std::string checkCulling(const Scene& scene) {
         oracle->cull(scene, cameraAt(scene, t), t, out);
         reference.push_back(out.pvs);
     }
-    for (const std::string& name : cullerNames()) {
+    for (const std::string& name : algorithmNames(scene.dimensions)) {
         std::unique_ptr<Culler> culler = makeCuller(name, options, error);
         if (!culler) return "cannot make " + name + ": " + error;
-        std::string why;
-        if (!culler->supports(scene, why)) continue;
         culler->reset(scene);
         for (size_t i = 0; i < frames.size(); ++i) {
             const double t = scene.timeOfFrame(frames[i]);

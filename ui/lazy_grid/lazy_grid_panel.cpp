@@ -18,7 +18,8 @@ const ImVec2 kSwatchSize(13, 13);
 // it, but never fainter than this so a faint class still shows its hue.
 constexpr float kMinSwatchAlpha = 0.45f;
 
-void swatch(const char* id, Rgb c, float alpha) {
+void swatch(const char* id, Swatch s, float alpha) {
+    const Rgb c = swatchColor(s);
     ImGui::ColorButton(id, ImVec4(c.r, c.g, c.b, std::max(alpha, kMinSwatchAlpha)), kSwatchFlags,
                        kSwatchSize);
     ImGui::SameLine();
@@ -45,7 +46,7 @@ int log2Floor(int v) {
 // Powers of two only: each change re-runs every frame so far, and the paper's
 // 32 sits in the middle.
 void cellSizeSlider(const LazyGridSnapshot& lazy, LazyGridPanelState& state,
-                    LazyGridAction& action) {
+                    FamilyAction& action) {
     if (!state.dragging)
         state.cell_size_log2 =
             std::clamp(log2Floor(lazy.cell_size), kLazyCellSizeMinLog2, kLazyCellSizeMaxLog2);
@@ -60,10 +61,10 @@ void cellSizeSlider(const LazyGridSnapshot& lazy, LazyGridPanelState& state,
                      kLazyCellSizeMaxLog2, label, ImGuiSliderFlags_AlwaysClamp);
     state.dragging = ImGui::IsItemActive();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Cell side in pixels (--cell-size); re-runs up to this frame");
+        ImGui::SetTooltip("Cell side in pixels (--lazy-cell-size); re-runs up to this frame");
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         const int size = 1 << state.cell_size_log2;
-        if (size != lazy.cell_size) action.cell_size = size;
+        if (size != lazy.cell_size) action.knobs.emplace_back("lazy-cell-size", size);
     }
 }
 
@@ -84,7 +85,7 @@ void cellStates(const LazyGridSnapshot& lazy) {
     const int n = lazyCellClassesOf(lazy.variant, classes);
     for (int k = 0; k < n; ++k) {
         const LazyCellClass c = classes[k];
-        swatch(lazyCellClassName(c), lazyCellClassColor(c), 1.0f);
+        swatch(lazyCellClassName(c), lazyCellClassSwatch(c), 1.0f);
         ImGui::Text("%-15s %4lld  %s", lazyCellClassName(c), (long long)counts.of(c),
                     lazyCellClassMeaning(c));
     }
@@ -104,21 +105,21 @@ void freeCell(const LazyGridSnapshot& lazy, const LazyGridTest& test) {
     if (test.occluded || test.touch_count == 0) return;
     const CellTouch& last = lazy.touches[size_t(test.first_touch + test.touch_count - 1)];
     if (!last.free || lazy.cells_x <= 0) return;
-    swatch("free cell", lazyFreeTouchColor(), 1.0f);
+    swatch("free cell", lazyFreeTouchSwatch(), 1.0f);
     ImGui::Text("found free: %s cell (%d, %d)",
                 last.role == CellRole::Internal ? "internal" : "border", last.cell % lazy.cells_x,
                 last.cell / lazy.cells_x);
 }
 
-void focusedObject(const FrameSnapshot& snapshot, const LazyGridSnapshot& lazy) {
-    const int index = snapshot.lazy_object;
-    if (index < 0 || index >= int(snapshot.scene->objects.size())) {
+void focusedObject(const LazyGridPanelInput& input, const LazyGridSnapshot& lazy) {
+    const int index = input.focus_object;
+    if (index < 0 || index >= int(input.scene->objects.size())) {
         ImGui::TextDisabled("point at (click) an object: its test shows here");
         return;
     }
-    const SceneObject& object = snapshot.scene->objects[size_t(index)];
+    const SceneObject& object = input.scene->objects[size_t(index)];
     ImGui::Text("object %d, %s (%s)", object.id, shapeName(object.shape, 3),
-                snapshot.lazy_object_pinned ? "picked" : "under the mouse");
+                input.focus_pinned ? "picked" : "under the mouse");
     const LazyDecision d = describeLazyDecision(lazy, index);
     if (!d.test) {
         ImGui::TextDisabled("not reached by the traversal");
@@ -144,7 +145,7 @@ bool layerToggle(LazyGridLayer layer, LazyGridViewState& view) {
     bool& on = view.show[int(layer)];
     const bool changed = ImGui::Checkbox("##show", &on);
     ImGui::SameLine();
-    swatch(lazyGridLayerName(layer), lazyGridLayerColor(layer), 1.0f);
+    swatch(lazyGridLayerName(layer), lazyGridLayerSwatch(layer), 1.0f);
     if (on)
         ImGui::Text("%-8s %s", lazyGridLayerName(layer), lazyGridLayerMeaning(layer));
     else
@@ -155,30 +156,21 @@ bool layerToggle(LazyGridLayer layer, LazyGridViewState& view) {
 
 }  // namespace
 
-LazyGridAction drawLazyGridPanel(const FrameSnapshot& snapshot, LazyGridPanelState& state) {
-    LazyGridAction action;
-    if (!snapshot.lazy_grid || !snapshot.lazy_grid->valid) return action;
-    const LazyGridSnapshot& lazy = *snapshot.lazy_grid;
-    const std::vector<std::string>& names = *snapshot.algo_names;
-    const char* algo = snapshot.algo_index >= 0 && snapshot.algo_index < int(names.size())
-                           ? names[size_t(snapshot.algo_index)].c_str()
-                           : "?";
+void drawLazyGridPanel(const LazyGridSnapshot& lazy, const LazyGridPanelInput& input,
+                       LazyGridViewState& view, LazyGridPanelState& state, FamilyAction& action) {
+    if (!lazy.valid) return;
     char title[96];
-    std::snprintf(title, sizeof title, "Lazy occlusion grid (%s)###lazy grid", algo);
-    if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return action;
+    std::snprintf(title, sizeof title, "Lazy occlusion grid (%s)###lazy grid", input.algo);
+    if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Text("%s", variantText(lazy));
     ImGui::Text("image %d x %d px, the culling camera's view", lazy.width, lazy.height);
     cellSizeSlider(lazy, state, action);
     counters(lazy);
     cellStates(lazy);
-    focusedObject(snapshot, lazy);
-    if (snapshot.view_mode != ViewMode::CullingCamera)
+    focusedObject(input, lazy);
+    if (input.view_mode != ViewMode::CullingCamera)
         ImGui::TextDisabled("overlay: in the \"culling camera\" view");
-    LazyGridViewState view = snapshot.lazy_view;
-    bool changed = false;
-    for (int l = 0; l < kLazyGridLayerCount; ++l) changed |= layerToggle(LazyGridLayer(l), view);
-    if (changed) action.view = view;
-    return action;
+    for (int l = 0; l < kLazyGridLayerCount; ++l) layerToggle(LazyGridLayer(l), view);
 }
 
 }  // namespace gridcull

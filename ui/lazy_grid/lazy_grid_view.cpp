@@ -7,13 +7,13 @@ namespace gridcull {
 
 namespace {
 
-// Okabe-Ito hues the object states (blue, sky blue, vermillion, grey) and the
-// camera (yellow) do not use.
-constexpr Rgb kBluishGreen{0.00f, 0.62f, 0.45f};
-constexpr Rgb kOrange{0.90f, 0.62f, 0.00f};
-constexpr Rgb kReddishPurple{0.80f, 0.47f, 0.65f};
-constexpr Rgb kGrey{0.62f, 0.62f, 0.64f};
-constexpr Rgb kWhite{1.0f, 1.0f, 1.0f};
+// Hues the object states (blue, sky blue, vermillion, dim grey) and the camera
+// (yellow) do not use.
+constexpr Swatch kBluishGreen = Swatch::BluishGreen;
+constexpr Swatch kOrange = Swatch::Orange;
+constexpr Swatch kReddishPurple = Swatch::ReddishPurple;
+constexpr Swatch kGrey = Swatch::Grey;
+constexpr Swatch kWhite = Swatch::White;
 
 }  // namespace
 
@@ -86,7 +86,7 @@ const char* lazyCellClassMeaning(LazyCellClass c) {
     return "";
 }
 
-Rgb lazyCellClassColor(LazyCellClass c) {
+Swatch lazyCellClassSwatch(LazyCellClass c) {
     switch (c) {
         case LazyCellClass::CompletelyFree:
         case LazyCellClass::ZfarAtZmax:
@@ -167,22 +167,22 @@ const char* lazyGridLayerMeaning(LazyGridLayer layer) {
     return "";
 }
 
-Rgb lazyGridLayerColor(LazyGridLayer layer) {
+Swatch lazyGridLayerSwatch(LazyGridLayer layer) {
     switch (layer) {
         case LazyGridLayer::Cells:
             return kReddishPurple;
         case LazyGridLayer::GridLines:
-            return {0.70f, 0.71f, 0.74f};
+            return Swatch::LineGrey;
         case LazyGridLayer::Touched:
         case LazyGridLayer::PixelQueries:
             return kWhite;
         case LazyGridLayer::ScreenRect:
-            return cullingCameraColor();  // the box as the culling camera sees it
+            return Swatch::Yellow;  // the camera's: the box as the culling camera sees it
     }
     return kWhite;
 }
 
-Rgb lazyFreeTouchColor() {
+Swatch lazyFreeTouchSwatch() {
     return kBluishGreen;
 }
 

@@ -1,18 +1,18 @@
 // What the window shows of the lazy occlusion grid (lazy-grid, lazy-grid-z,
 // busy-grid; culling/lazy_grid/lazy_grid_snapshot.h) and the colours it uses, shared by the
 // lazy grid panel (ui/lazy_grid/lazy_grid_panel.h), which changes the view state and keys
-// the colours, and the app's overlay (app/lazy_grid_overlay.h), which draws it.
+// the colours, and the overlay (ui/lazy_grid/lazy_grid_overlay.h), which draws it.
 //
 // Cell classes use the paper's state names (Hey, Tobler & Purgathofer, section 3):
 // completely free, partially free, full and outdated for the occlusion-buffer
 // variant; zfar = zmax, zfar < zmax and outdated for the z-buffer variant. Colours
-// are the Okabe-Ito hues the object states (ui/object_state.h) and the camera
+// are the palette's hues (ui/palette.h) that the object states and the camera
 // leave free, or greys, so a cell never reads as an object's state.
 #pragma once
 #include <cstdint>
 
 #include "culling/lazy_grid/lazy_grid_snapshot.h"
-#include "ui/object_state.h"
+#include "ui/palette.h"
 
 namespace gridcull {
 
@@ -37,7 +37,7 @@ const char* lazyCellClassMeaning(LazyCellClass c);
 // class colour: the outline carries the colour, so the fill can stay faint
 // enough that the objects under it keep their state colours. Outdated cells are
 // hatched instead of filled (their state is unknown until a test reads them).
-Rgb lazyCellClassColor(LazyCellClass c);
+Swatch lazyCellClassSwatch(LazyCellClass c);
 float lazyCellClassFillAlpha(LazyCellClass c);  // 0: not filled
 bool lazyCellClassHatched(LazyCellClass c);
 
@@ -64,10 +64,10 @@ constexpr int kLazyGridLayerCount = 5;
 
 const char* lazyGridLayerName(LazyGridLayer layer);
 const char* lazyGridLayerMeaning(LazyGridLayer layer);
-Rgb lazyGridLayerColor(LazyGridLayer layer);
+Swatch lazyGridLayerSwatch(LazyGridLayer layer);
 // The colour of a touched cell the test found free (the cell that made the box
-// potentially visible), instead of lazyGridLayerColor(Touched).
-Rgb lazyFreeTouchColor();
+// potentially visible), instead of lazyGridLayerSwatch(Touched).
+Swatch lazyFreeTouchSwatch();
 
 struct LazyGridViewState {
     bool show[kLazyGridLayerCount] = {true, true, true, true, true};

@@ -19,7 +19,7 @@ bool layerToggle(RgvcLayer layer, RgvcViewState& view) {
     bool& on = view.show[int(layer)];
     const bool changed = ImGui::Checkbox("##show", &on);
     ImGui::SameLine();
-    const Rgb c = rgvcLayerColor(layer);
+    const Rgb c = swatchColor(rgvcLayerSwatch(layer));
     // O and H are veils: show their swatch over the world's dark fill as drawn.
     const float alpha = std::max(rgvcLayerAlpha(layer), 0.6f);
     ImGui::ColorButton(rgvcLayerName(layer), ImVec4(c.r, c.g, c.b, alpha), kSwatchFlags,
@@ -134,21 +134,17 @@ bool occluderPicker(const RgvcSnapshot& rgvc, RgvcViewState& view) {
 
 }  // namespace
 
-RgvcAction drawRgvcPanel(const FrameSnapshot& snapshot) {
-    RgvcAction action;
-    if (!snapshot.rgvc || !snapshot.rgvc->valid) return action;
+bool drawRgvcPanel(const RgvcSnapshot& rgvc, RgvcViewState& view, const RgvcVoxelInfo* voxel) {
+    if (!rgvc.valid) return false;
     if (!ImGui::CollapsingHeader("Regular grid (rgvc)", ImGuiTreeNodeFlags_DefaultOpen))
-        return action;
-    const RgvcSnapshot& rgvc = *snapshot.rgvc;
-    RgvcViewState view = snapshot.rgvc_view;
+        return false;
     bool changed = false;
     for (int l = 0; l < kRgvcLayerCount; ++l) changed |= layerToggle(RgvcLayer(l), view);
     changed |= layerStepper(rgvc, view);
     changed |= occluderPicker(rgvc, view);
     memoryRows(rgvc.memory);
-    voxelInfo(snapshot.rgvc_voxel);
-    if (changed) action.view = view;
-    return action;
+    voxelInfo(voxel);
+    return changed;
 }
 
 }  // namespace gridcull

@@ -56,30 +56,29 @@ const char* rgvcLayerMeaning(RgvcLayer layer) {
     return "";
 }
 
-Rgb rgvcLayerColor(RgvcLayer layer) {
+Swatch rgvcLayerSwatch(RgvcLayer layer) {
     switch (layer) {
         case RgvcLayer::Occluder:
-            return {0.03f, 0.03f, 0.04f};
+            return Swatch::NearBlack;
         case RgvcLayer::Occlusion:
-            return {0.92f, 0.92f, 0.92f};
+            return Swatch::LightGrey;
         case RgvcLayer::Identifiers:
-            return {0.90f, 0.62f, 0.00f};  // orange
+            return Swatch::Orange;
         case RgvcLayer::Tbv:
-            return {0.80f, 0.47f, 0.65f};  // reddish purple
+            return Swatch::ReddishPurple;
         case RgvcLayer::Visited:
-            return {0.00f, 0.62f, 0.45f};  // bluish green
-        case RgvcLayer::CurrentLayer:
-            return {0.00f, 0.62f, 0.45f};  // the same, solid
+        case RgvcLayer::CurrentLayer:  // the same, solid
+            return Swatch::BluishGreen;
         case RgvcLayer::Seed:
-            return {1.00f, 1.00f, 1.00f};
+            return Swatch::White;
         case RgvcLayer::LineOfSight:
-            return {0.94f, 0.89f, 0.26f};  // the camera's yellow
+            return Swatch::Yellow;  // the camera's
         case RgvcLayer::PickedOccluder:
-            return {0.34f, 0.71f, 0.91f};  // sky blue
+            return Swatch::SkyBlue;
         case RgvcLayer::Polygon:
-            return {0.84f, 0.37f, 0.00f};  // vermillion
+            return Swatch::Vermillion;
     }
-    return {1.0f, 1.0f, 1.0f};
+    return Swatch::White;
 }
 
 float rgvcLayerAlpha(RgvcLayer layer) {

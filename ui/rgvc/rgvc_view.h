@@ -1,10 +1,9 @@
 // What the 2D view shows of regular-grid culling (`rgvc`, culling/rgvc/rgvc_snapshot.h)
 // and the colours it uses, shared by the rgvc panel (ui/rgvc/rgvc_panel.h), which
-// changes it, and the app's overlay (app/rgvc_overlay.h), which draws it; and the
+// changes it, and the overlay (ui/rgvc/rgvc_overlay.h), which draws it; and the
 // description of one voxel for the panel's "voxel under the mouse".
 //
-// Colours are from the Okabe-Ito palette (or greys), told apart with every common
-// colour-vision deficiency; the object-state colours keep their own meaning.
+// Colours are swatches of the one palette (ui/palette.h).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -13,7 +12,7 @@
 
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/scene/scene.h"
-#include "ui/object_state.h"
+#include "ui/palette.h"
 
 namespace gridcull {
 
@@ -34,9 +33,10 @@ constexpr int kRgvcLayerCount = 10;
 
 const char* rgvcLayerName(RgvcLayer layer);
 const char* rgvcLayerMeaning(RgvcLayer layer);
-Rgb rgvcLayerColor(RgvcLayer layer);
+Swatch rgvcLayerSwatch(RgvcLayer layer);
 // Opacity the overlay draws the layer's fill with (O and H are veils over the objects).
 float rgvcLayerAlpha(RgvcLayer layer);
+inline Paint rgvcLayerPaint(RgvcLayer layer) { return {rgvcLayerSwatch(layer), rgvcLayerAlpha(layer)}; }
 
 struct RgvcViewState {
     bool show[kRgvcLayerCount] = {true, true, true, true, true, true, true, true, true, true};

@@ -1,7 +1,5 @@
-// The culler registry, counter names, timedCull and the `all` baseline.
+// timedCull and the `all` baseline.
 #include <algorithm>
-#include <cctype>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -9,56 +7,13 @@
 
 #include "culling/baseline/all_culler.h"
 #include "culling/api/culler.h"
+#include "culling/registry/registry.h"
 #include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull {
 namespace {
 
 using V = std::vector<int>;
-
-TEST(CounterNames, AreTheSpecNamesInSnakeCase) {
-    const std::vector<std::string> expected = {
-        "voxels_visited", "tbv_created",     "tbv_expired",    "tbv_revealed",
-        "object_updates", "update_messages", "pixel_queries",  "occlusion_queries",
-        "nodes_visited",  "triangles_drawn", "objects_tested", "pixels_sampled",
-        "occlusion_tests", "pixels_read",   "cell_updates",   "bvh_rebuilds",
-        "probability_skips"};
-    ASSERT_EQ(int(expected.size()), kCounterCount);
-    std::set<std::string> seen;
-    for (int i = 0; i < kCounterCount; ++i) {
-        const std::string name = counterName(Counter(i));
-        EXPECT_EQ(name, expected[size_t(i)]);
-        EXPECT_TRUE(std::all_of(name.begin(), name.end(), [](char c) {
-            return std::islower(c) || c == '_';
-        })) << name;
-        seen.insert(name);
-    }
-    EXPECT_EQ(int(seen.size()), kCounterCount);
-}
-
-TEST(CullerRegistry, MakesEveryListedCullerUnderItsName) {
-    const std::vector<std::string> names = cullerNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
-                                              "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
-    for (const std::string& name : names) {
-        std::string error;
-        auto culler = makeCuller(name, CullerOptions{}, error);
-        ASSERT_TRUE(culler) << name << ": " << error;
-        EXPECT_EQ(std::string(culler->name()), name);
-        EXPECT_TRUE(error.empty());
-    }
-}
-
-TEST(CullerRegistry, UnknownNameIsAnErrorThatListsTheKnownOnes) {
-    std::string error;
-    EXPECT_EQ(makeCuller("rgvcc", CullerOptions{}, error), nullptr);
-    EXPECT_NE(error.find("rgvcc"), std::string::npos) << error;
-    for (const std::string& name : cullerNames())
-        EXPECT_NE(error.find(name), std::string::npos) << error;
-    error.clear();
-    EXPECT_EQ(makeCuller("", CullerOptions{}, error), nullptr);
-    EXPECT_FALSE(error.empty());
-}
 
 Scene smallScene() {
     Scene scene = test::scene3d();
@@ -91,7 +46,7 @@ TEST(AllCuller, ReportsEveryIdSortedAndNoCounters) {
 
 TEST(TimedCull, SetsCullMsAndKeepsTheResult) {
     const Scene scene = smallScene();
-    for (const std::string& name : cullerNames()) {
+    for (const std::string& name : algorithmNames()) {
         SCOPED_TRACE(name);
         auto culler = test::makeOrDie(name);
         culler->reset(scene);

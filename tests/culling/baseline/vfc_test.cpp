@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "culling/oracle/exact_oracle.h"
+#include "culling/baseline/frustum_tests.h"
 #include "culling/baseline/vfc_culler.h"
 #include "tests/common/oracle_test_scenes.h"
 
@@ -60,7 +61,7 @@ TEST(Vfc3d, KeepsABoxBesideAFrustumEdgeThatTheOracleDrops) {
     scene.finalize();
     EXPECT_TRUE(boxMayIntersectFrustum(scene.objects[0].bounds, camera));
     EXPECT_EQ(vfcIds(scene), V{1});
-    ExactOracle exact{CullerOptions{}};
+    ExactOracle exact;
     EXPECT_EQ(test::cullIds(exact, scene), V{});
 }
 

@@ -58,8 +58,8 @@ TEST(LazyGridAllocation, TheCounterSeesAnAllocation) {
 TEST(LazyGridAllocation, SteadyFramesAllocateNothing) {
     for (uint64_t seed : {3u, 8u, 21u, 34u}) {
         const Scene scene = test::lazyGridRandomScene(seed);
-        CullerOptions options;
-        options.oracle_resolution = 320;
+        KnobValues options;
+        options.set("oracle-res", 320);
         for (const char* name : {"lazy-grid", "lazy-grid-z", "busy-grid", "busy-grid-tight"}) {
             auto culler = test::makeOrDie(name, options);
             culler->reset(scene);

@@ -1,7 +1,7 @@
 // The lazy occlusion grid cullers against the exact oracle (the issue's
 // acceptance: 0 false culls for both variants over at least 500 seeded random
-// scenes x 20 frames). The oracle samples the same image (lazy_resolution =
-// oracle_resolution), which is what the lazy grid promises to be conservative
+// scenes x 20 frames). The oracle samples the same image (--lazy-res =
+// --oracle-res), which is what the lazy grid promises to be conservative
 // for (culling/lazy_grid/lazy_grid_culler.h). Every PVS must also be sorted, unique and
 // within vfc's (the traversal culls by the same frustum test).
 //
@@ -31,7 +31,7 @@ struct Totals {
     long long frames = 0, pvs = 0, exact = 0, vfc = 0, false_culls = 0;
 };
 
-void runScene(const Scene& scene, const CullerOptions& options,
+void runScene(const Scene& scene, const KnobValues& options,
               const std::vector<std::string>& names, std::vector<Totals>& totals) {
     auto oracle = test::makeOrDie("exact", options);
     auto vfc = test::makeOrDie("vfc", options);
@@ -67,7 +67,7 @@ void runScene(const Scene& scene, const CullerOptions& options,
     }
 }
 
-void sweep(const CullerOptions& options, const char* label) {
+void sweep(const KnobValues& options, const char* label) {
     const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
                                             "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
@@ -87,24 +87,24 @@ void sweep(const CullerOptions& options, const char* label) {
 }
 
 TEST(LazyGridDifferential, NoFalseCullsOverFiveHundredRandomScenes) {
-    CullerOptions options;
-    options.oracle_resolution = kResolution;
+    KnobValues options;
+    options.set("oracle-res", kResolution);
     sweep(options, "cells 32");
 }
 
 TEST(LazyGridDifferential, NoFalseCullsWithSmallCellsAndEverySectionSixExtension) {
-    CullerOptions options;
-    options.oracle_resolution = kResolution;
-    options.lazy_cell_size = 8;
-    options.lazy_probability_threshold = 0.5;
-    options.lazy_border_whole_fraction = 0.3;
-    options.lazy_large_box_fraction = 0.2;
+    KnobValues options;
+    options.set("oracle-res", kResolution);
+    options.set("lazy-cell-size", 8);
+    options.set("lazy-prob", 0.5);
+    options.set("lazy-border-whole", 0.3);
+    options.set("lazy-large-box", 0.2);
     sweep(options, "cells 8, extensions on");
 }
 
 TEST(LazyGridDifferential, NoFalseCullsAtTheOracleDefaultResolutionOnFewerScenes) {
     // 1024 pixels on the long side, the window's setting: a few scenes only.
-    CullerOptions options;
+    KnobValues options;
     const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
                                             "busy-grid-tight"};
     std::vector<Totals> totals(names.size());

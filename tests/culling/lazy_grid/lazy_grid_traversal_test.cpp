@@ -22,10 +22,8 @@ namespace {
 
 void checkTraversal(LazyGridVariant variant, LazyGridUpdate update, uint64_t seed) {
     const Scene scene = test::lazyGridRandomScene(seed);
-    CullerOptions options;
-    options.oracle_resolution = 200;
-    LazyGridCuller culler(variant, update, options);
-    culler.setSnapshotEnabled(true);
+    LazyGridCuller culler(variant, update, LazyGridOptions{}, 200);
+    culler.setDebugCapture(true);
     culler.reset(scene);
     FrameResult result;
     for (int frame = 0; frame < scene.frames; frame += 4) {

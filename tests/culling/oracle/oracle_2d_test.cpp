@@ -23,7 +23,7 @@ using V = std::vector<int>;
 constexpr double kPi = 3.141592653589793;
 const glm::dvec3 kEye{5, 50, 0};
 
-V exactIds(const Scene& scene, double t = 0.0, CullerOptions options = CullerOptions{}) {
+V exactIds(const Scene& scene, double t = 0.0, OracleOptions options = OracleOptions{}) {
     ExactOracle oracle{options};
     return test::cullIds(oracle, scene, t);
 }
@@ -220,7 +220,7 @@ TEST(Oracle2d, ReportsItsCounters) {
     addSphere(scene, 2, {-60, 50, 0}, 3);  // behind the camera
     addSphere(scene, 3, {5, 2000, 0}, 3);  // beyond far
     scene.finalize();
-    ExactOracle oracle{CullerOptions{}};
+    ExactOracle oracle;
     oracle.reset(scene);
     FrameResult result;
     oracle.cull(scene, cameraAt(scene, 0.0), 0.0, result);
@@ -238,8 +238,8 @@ TEST(Oracle2d, TinyFarObjectFoundAtDefaultResolution) {
     addSphere(scene, 1, kEye + glm::dvec3(90, 0, 0), 0.05);  // on the boundary of two coarse bins
     scene.finalize();
     EXPECT_EQ(exactIds(scene), V{1});
-    CullerOptions coarse;
-    coarse.oracle_rays_per_turn = 256;  // 64 rays over 90 degrees
+    OracleOptions coarse;
+    coarse.rays_per_turn = 256;  // 64 rays over 90 degrees
     EXPECT_EQ(exactIds(scene, 0.0, coarse), V{});
 }
 

@@ -24,7 +24,7 @@ const glm::dvec3 kEye{50, 50, 5};
 const glm::dvec3 kAhead{50, 50, 100};
 
 V exactIds(const Scene& scene, double t = 0.0) {
-    ExactOracle oracle{CullerOptions{}};
+    ExactOracle oracle;
     return test::cullIds(oracle, scene, t);
 }
 
@@ -247,7 +247,7 @@ TEST(Oracle3d, ReportsItsCountersAndSize) {
     addSphere(scene, 1, {50, 50, 60}, 3);
     addSphere(scene, 2, {50, 50, -60}, 3);  // behind the camera: rejected whole
     scene.finalize();
-    ExactOracle oracle{CullerOptions{}};
+    ExactOracle oracle;
     oracle.reset(scene);
     FrameResult result;
     timedCull(oracle, scene, cameraAt(scene, 0.0), 0.0, result);
@@ -271,8 +271,8 @@ TEST(Oracle3d, TinyFarObjectFoundAtDefaultResolution) {
     addSphere(scene, 1, {50.37, 49.81, 100}, 0.25);
     scene.finalize();
     EXPECT_EQ(exactIds(scene), V{1});
-    CullerOptions coarse;
-    coarse.oracle_resolution = 16;
+    OracleOptions coarse;
+    coarse.resolution = 16;
     ExactOracle low{coarse};
     EXPECT_EQ(test::cullIds(low, scene), V{});
 }

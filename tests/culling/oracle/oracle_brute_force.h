@@ -106,13 +106,13 @@ inline void referenceHits2d(const Scene& scene, double t, const glm::dvec3& eye,
     }
 }
 
-inline Reference bruteForce(const Scene& scene, double t, const CullerOptions& options) {
+inline Reference bruteForce(const Scene& scene, double t, const OracleOptions& options) {
     const Camera cam = cameraAt(scene, t);
     Reference ref;
     std::vector<std::pair<double, int>> hits;
     if (scene.dimensions == 3) {
         int w, h;
-        ExactOracle::imageSize(options.oracle_resolution, cam.aspect, w, h);
+        ExactOracle::imageSize(options.resolution, cam.aspect, w, h);
         glm::dvec3 right, up, fwd;
         cam.basis(right, up, fwd);
         const double tan_y = std::tan(glm::radians(cam.fov_deg) / 2), tan_x = tan_y * cam.aspect;
@@ -127,7 +127,7 @@ inline Reference bruteForce(const Scene& scene, double t, const CullerOptions& o
             }
         }
     } else {
-        const int rays = ExactOracle::rayCount(options.oracle_rays_per_turn, cam.fov_deg);
+        const int rays = ExactOracle::rayCount(options.rays_per_turn, cam.fov_deg);
         const glm::dvec3 fwd = cam.forward();
         const double fov = glm::radians(cam.fov_deg);
         const double start = std::atan2(fwd.y, fwd.x) - fov / 2;

@@ -102,7 +102,7 @@ bool sortedUnique(const V& ids) {
 }
 
 TEST(OracleDifferential, VfcContainsExactAndAllIsEveryId) {
-    ExactOracle exact{CullerOptions{}};
+    ExactOracle exact;
     auto vfc = test::makeOrDie("vfc");
     auto all = test::makeOrDie("all");
     FrameResult exact_out, vfc_out, all_out;
@@ -130,9 +130,9 @@ TEST(OracleDifferential, VfcContainsExactAndAllIsEveryId) {
 }
 
 TEST(OracleDifferential, ExactEqualsBruteForceRayCasting) {
-    CullerOptions options;
-    options.oracle_resolution = 160;       // 160 x (160 / aspect) rays per 3D frame
-    options.oracle_rays_per_turn = 16384;  // the default in 2D
+    OracleOptions options;
+    options.resolution = 160;      // 160 x (160 / aspect) rays per 3D frame
+    options.rays_per_turn = 16384;  // the default in 2D
     ExactOracle exact{options};
     FrameResult out;
     int compared_ids = 0;

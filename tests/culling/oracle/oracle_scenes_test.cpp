@@ -32,9 +32,9 @@ TEST(OracleScenes, ThereAreScenesToTest) {
 }
 
 TEST(OracleScenes, ExactEqualsBruteForceOnShippedScenes) {
-    CullerOptions options;
-    options.oracle_resolution = 64;
-    options.oracle_rays_per_turn = 4096;
+    OracleOptions options;
+    options.resolution = 64;
+    options.rays_per_turn = 4096;
     ExactOracle exact{options};
     FrameResult out;
     for (const std::string& path : shippedScenes()) {
@@ -56,7 +56,7 @@ TEST(OracleScenes, ExactEqualsBruteForceOnShippedScenes) {
 }
 
 TEST(OracleScenes, VfcContainsExactOnShippedScenes) {
-    ExactOracle exact{CullerOptions{}};
+    ExactOracle exact;
     auto vfc = test::makeOrDie("vfc");
     FrameResult exact_out, vfc_out;
     for (const std::string& path : shippedScenes()) {

@@ -1,4 +1,4 @@
-// The extremes suite's harness (issue 5): every algorithm of cullerNames() runs
+// The extremes suite's harness: every algorithm of the registry runs
 // a case's frames in order, and each frame's PVS is checked against the exact
 // oracle (culling/oracle/exact_oracle.h) for false culls: an id the oracle reports that
 // the algorithm left out. It must contain every such id, be sorted and unique,
@@ -6,7 +6,8 @@
 // its counters within their bounds (voxels_visited <= voxels of the grid,
 // objects_tested <= objects).
 //
-// An algorithm whose supports(scene, why) is false is not run; its row says
+// An algorithm the registry does not offer for the scene's dimension is not
+// run (algorithmFits); its row says
 // "skipped" and why, so a skip is visible in the output, never silent. `exact`
 // is the reference itself: its row checks only that it finishes, and the case's
 // must_see / must_hide ids, which state what the oracle has to report by
@@ -34,6 +35,7 @@
 #include <gtest/gtest.h>
 
 #include "culling/api/culler.h"
+#include "culling/registry/registry.h"
 #include "culling/oracle/exact_oracle.h"
 #include "culling/io/scene_loader.h"
 #include "tests/common/oracle_test_scenes.h"
@@ -55,7 +57,7 @@ struct ExtremeCase {
     std::string name;
     Scene scene;                       // finalized
     std::vector<ExtremeFrame> frames;  // in increasing t
-    CullerOptions options;             // for the reference oracle and every algorithm
+    KnobValues knobs;                  // for the reference oracle and every algorithm
 };
 
 // The scene's own camera at the given times.
@@ -136,7 +138,7 @@ inline std::vector<ExtremeRow> runExtremeCase(const ExtremeCase& c) {
     SCOPED_TRACE("case " + c.name);
     std::vector<ExtremeRow> rows;
     // The reference, one PVS per frame, from a fresh oracle.
-    ExactOracle oracle{c.options};
+    ExactOracle oracle{oracleOptions(c.knobs)};
     oracle.reset(c.scene);
     std::vector<std::vector<int>> reference;
     ExtremeRow exact_row;
@@ -160,24 +162,24 @@ inline std::vector<ExtremeRow> runExtremeCase(const ExtremeCase& c) {
         exact_row.max_ms = std::max(exact_row.max_ms, out.stats.cull_ms);
         reference.push_back(out.pvs);
     }
-    for (const std::string& name : cullerNames()) {
+    for (const std::string& name : algorithmNames()) {
         if (name == "exact") {
             rows.push_back(exact_row);
             printRow(c.name, exact_row);
             continue;
         }
         std::string error;
-        std::unique_ptr<Culler> culler = makeCuller(name, c.options, error);
-        EXPECT_TRUE(culler) << error;
-        if (!culler) continue;
         ExtremeRow row;
         row.algo = name;
-        if (!culler->supports(c.scene, row.why)) {
+        if (!algorithmFits(name, c.scene, row.why)) {
             row.skipped = true;
             rows.push_back(row);
             printRow(c.name, row);
             continue;
         }
+        std::unique_ptr<Culler> culler = makeCuller(name, c.knobs, error);
+        EXPECT_TRUE(culler) << error;
+        if (!culler) continue;
         culler->reset(c.scene);
         FrameResult out;
         for (size_t f = 0; f < c.frames.size(); ++f) {

@@ -105,24 +105,23 @@ struct Tally {
 };
 
 TEST(ExtremesMonotonic, OracleIsMonotoneAndCullersAreMeasured) {
-    CullerOptions options;
-    options.oracle_resolution = 320;
-    options.oracle_rays_per_turn = 8192;
+    KnobValues knobs;
+    knobs.set("oracle-res", 320);
+    knobs.set("oracle-rays", 8192);
     std::map<std::string, Tally> tallies;
     int hiding_trials = 0;  // trials where the occluder hid something: the test has teeth
     for (const uint64_t seed : test::seedsToRun(0, kSeeds)) {
         test::withSeed(seed, [&] {
             const Trial trial = makeTrial(seed);
-            for (const std::string& name : cullerNames()) {
+            for (const std::string& name : algorithmNames()) {
                 std::string error;
-                std::unique_ptr<Culler> culler = makeCuller(name, options, error);
-                ASSERT_TRUE(culler) << error;
                 Tally& tally = tallies[name];
-                std::string why;
-                if (!culler->supports(trial.scene, why)) {
+                if (!algorithmFits(name, trial.scene, error)) {
                     ++tally.skipped;
                     continue;
                 }
+                std::unique_ptr<Culler> culler = makeCuller(name, knobs, error);
+                ASSERT_TRUE(culler) << error;
                 const std::vector<int> base = pvsOf(*culler, trial.scene, trial.camera, trial.t);
                 const std::vector<int> added = without(
                     pvsOf(*culler, trial.with_occluder, trial.camera, trial.t), kOccluderId);
@@ -146,11 +145,11 @@ TEST(ExtremesMonotonic, OracleIsMonotoneAndCullersAreMeasured) {
             }
         });
     }
-    for (const std::string& name : cullerNames()) {
+    for (const std::string& name : algorithmNames()) {
         const Tally& t = tallies[name];
         std::printf("[monotonic] %s | adding: %d of %d monotone | removing: %d of %d monotone",
                     name.c_str(), t.add_monotone, t.add_trials, t.remove_monotone, t.remove_trials);
-        if (t.skipped > 0) std::printf(" | skipped on %d scenes (supports() is false)", t.skipped);
+        if (t.skipped > 0) std::printf(" | skipped on %d scenes (not offered for its dimension)", t.skipped);
         std::printf("\n");
     }
     std::printf("[monotonic] the added occluder hid something from the oracle in %d trials\n",

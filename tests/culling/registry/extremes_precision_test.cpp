@@ -75,7 +75,7 @@ ExtremeCase precisionBase(int dims) {
 }
 
 std::vector<std::vector<int>> exactPvs(const ExtremeCase& c) {
-    ExactOracle oracle{c.options};
+    ExactOracle oracle{oracleOptions(c.knobs)};
     oracle.reset(c.scene);
     std::vector<std::vector<int>> pvs;
     FrameResult out;

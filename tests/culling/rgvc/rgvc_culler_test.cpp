@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "culling/oracle/exact_oracle.h"
+#include "culling/registry/registry.h"
 #include "culling/rgvc/rgvc_culler.h"
 #include "tests/common/oracle_test_scenes.h"
 
@@ -37,7 +38,7 @@ void moving(Scene& scene, const glm::dvec3& velocity) {
 
 // Culls frames 0..frames-1 with rgvc and exact; fails on a false cull.
 std::vector<FrameResult> runChecked(const Scene& scene, int frames, RgvcCuller& rgvc) {
-    ExactOracle exact(CullerOptions{});
+    ExactOracle exact;
     rgvc.reset(scene);
     exact.reset(scene);
     std::vector<FrameResult> results;
@@ -53,13 +54,14 @@ std::vector<FrameResult> runChecked(const Scene& scene, int frames, RgvcCuller& 
     return results;
 }
 
-TEST(RgvcCuller, SupportsOnly2d) {
-    RgvcCuller rgvc(CullerOptions{});
+TEST(RgvcCuller, RegistryOffersItFor2dOnly) {
     std::string why;
-    EXPECT_TRUE(rgvc.supports(test::scene2d(), why));
-    EXPECT_FALSE(rgvc.supports(test::scene3d(), why));
-    EXPECT_EQ(why, "3D regular-grid culling is not implemented yet (issue 3 covers 2D)");
+    EXPECT_TRUE(algorithmFits("rgvc", test::scene2d(), why));
+    EXPECT_FALSE(algorithmFits("rgvc", test::scene3d(), why));
+    EXPECT_NE(why.find("rgvc runs on 2D scenes only, and this scene is 3D"), std::string::npos)
+        << why;
     // Culling a 3D scene anyway falls back to view-frustum culling.
+    RgvcCuller rgvc;
     Scene scene = test::scene3d();
     addSphere(scene, 4, {50, 50, 50}, 2);
     addSphere(scene, 2, {50, 50, 90}, 2);
@@ -74,7 +76,7 @@ TEST(RgvcCuller, MatricesOnlyWhereTheSceneNeedsThem) {
     addBox(still, 0, {40, 10, 0}, {42, 90, 0});
     still.finalize();
     test::setCamera(still, {10, 50, 0}, {90, 50, 0}, 90);
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     test::cullIds(rgvc, still);
     RgvcMatrixMemory m = rgvc.memory();
     EXPECT_EQ(m.occluder, size_t(100 * 2 * 8));  // 100 rows of two 64-bit words
@@ -105,7 +107,7 @@ TEST(RgvcCuller, AWallHidesWhatIsBehindIt) {
     addSphere(scene, 4, {5, 50, 0}, 2);          // behind the camera
     scene.finalize();
     test::setCamera(scene, {10, 50, 0}, {90, 50, 0}, 90);
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     EXPECT_EQ(test::cullIds(rgvc, scene), (std::vector<int>{0, 3}));
 }
 
@@ -118,10 +120,10 @@ TEST(RgvcCuller, TbvIsCreatedExpiresAndIsRevealed) {
     moving(scene, {0, 15, 0});
     scene.finalize();
     test::setCamera(scene, {10, 50, 0}, {90, 50, 0}, 90);
-    CullerOptions options;
-    options.rgvc_validity_s = 0.5;
+    RgvcOptions options;
+    options.validity_s = 0.5;
     RgvcCuller rgvc(options);
-    rgvc.setSnapshotEnabled(true);
+    rgvc.setDebugCapture(true);
     const std::vector<FrameResult> frames = runChecked(scene, 40, rgvc);
     EXPECT_FALSE(has(frames[0].pvs, 1));                              // hidden from the start
     EXPECT_EQ(frames[1].stats.get(Counter::TbvCreated), 1);           // so it gets a TBV
@@ -150,8 +152,8 @@ TEST(RgvcCuller, TeleportIntoABoundaryTbvRevealsIt) {
     scene.camera.path = {CameraKey{0.0, {10, 50, 0}, {90, 50, 0}, {0, 1, 0}},
                          CameraKey{0.45, {10, 50, 0}, {90, 50, 0}, {0, 1, 0}},
                          CameraKey{0.46, {60.5, 53.5, 0}, {60.5, 0, 0}, {0, 1, 0}}};
-    RgvcCuller rgvc(CullerOptions{});
-    rgvc.setSnapshotEnabled(true);
+    RgvcCuller rgvc;
+    rgvc.setDebugCapture(true);
     const std::vector<FrameResult> frames = runChecked(scene, 8, rgvc);
     EXPECT_FALSE(has(frames[4].pvs, 1));
     EXPECT_EQ(frames[5].stats.get(Counter::TbvRevealed), 1);
@@ -167,7 +169,7 @@ TEST(RgvcCuller, ObjectsOutsideTheGridAreKeptWhenInTheFrustum) {
     moving(scene, {0, -1, 0});
     scene.finalize();
     test::setCamera(scene, {20, 50, 0}, {90, 50, 0}, 120);
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     const std::vector<FrameResult> frames = runChecked(scene, 5, rgvc);
     EXPECT_TRUE(has(frames[0].pvs, 0));
     EXPECT_TRUE(has(frames[0].pvs, 1));
@@ -189,9 +191,9 @@ TEST(RgvcCuller, TbvReachingOutsideTheGridIsKeptOutOfT) {
                          CameraKey{1.01, {60, 50, 0}, {60, 0, 0}, {0, 1, 0}},
                          CameraKey{1.5, {60, 50, 0}, {60, 0, 0}, {0, 1, 0}},
                          CameraKey{1.51, {60, 50, 0}, {100, 50, 0}, {0, 1, 0}}};
-    RgvcCuller rgvc(CullerOptions{});
-    rgvc.setSnapshotEnabled(true);
-    ExactOracle exact(CullerOptions{});
+    RgvcCuller rgvc;
+    rgvc.setDebugCapture(true);
+    ExactOracle exact;
     rgvc.reset(scene);
     exact.reset(scene);
     bool saw_edge_tbv = false;
@@ -226,8 +228,8 @@ TEST(RgvcCuller, ViewpointsMillionsOfVoxelsAwayStayConservative) {
     scene.finalize();
     for (const double distance : {5e6, 1e7, 1e9}) {
         test::setCamera(scene, {-distance, 0.5, 0}, {0, 0.5, 0}, 10, 0.1, 2e9);
-        RgvcCuller rgvc(CullerOptions{});
-        ExactOracle exact(CullerOptions{});
+        RgvcCuller rgvc;
+        ExactOracle exact;
         const std::vector<int> got = test::cullIds(rgvc, scene);
         EXPECT_TRUE(test::isSubset(test::cullIds(exact, scene), got)) << "distance " << distance;
         EXPECT_TRUE(has(got, 0) && has(got, 2)) << "distance " << distance;
@@ -240,7 +242,7 @@ TEST(RgvcCuller, ViewerInsideAnObjectSeesIt) {
     addSphere(scene, 1, {60, 20, 0}, 3);
     scene.finalize();
     test::setCamera(scene, {20, 20, 0}, {90, 20, 0}, 90);
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     EXPECT_TRUE(has(test::cullIds(rgvc, scene), 0));
 }
 
@@ -251,12 +253,12 @@ TEST(RgvcCuller, SnapshotOnlyWhenAsked) {
     moving(scene, {1, 0, 0});
     scene.finalize();
     test::setCamera(scene, {10, 50, 0}, {90, 50, 0}, 90);
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     test::cullIds(rgvc, scene);
     EXPECT_FALSE(rgvc.snapshot().valid);
     EXPECT_TRUE(rgvc.snapshot().visits.empty());
     EXPECT_GT(rgvc.snapshot().memory.total(), size_t(0));
-    rgvc.setSnapshotEnabled(true);
+    rgvc.setDebugCapture(true);
     test::cullIds(rgvc, scene);
     const RgvcSnapshot& snap = rgvc.snapshot();
     ASSERT_TRUE(snap.valid);

@@ -40,10 +40,10 @@ std::string idList(const std::vector<int>& ids) {
     return s;
 }
 
-void runScene(uint64_t seed, const CullerOptions& options, SweepTotals& totals) {
+void runScene(uint64_t seed, const RgvcOptions& options, SweepTotals& totals) {
     const Scene scene = test::rgvcRandomScene(seed);
     RgvcCuller rgvc(options);
-    ExactOracle exact(options);
+    ExactOracle exact;
     VfcCuller vfc;
     rgvc.reset(scene);
     exact.reset(scene);
@@ -92,7 +92,7 @@ TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
     SweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(1000, kScenes);
     for (const uint64_t seed : seeds)
-        test::withSeed(seed, [&] { runScene(seed, CullerOptions{}, totals); });
+        test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });
     report("default run", int(seeds.size()), totals);
     EXPECT_EQ(totals.false_culls, 0);
     // Culling must do something on these scenes: far fewer than all objects.
@@ -102,8 +102,8 @@ TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
 TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
     SweepTotals totals;
     for (const double validity : {0.05, 5.0}) {
-        CullerOptions options;
-        options.rgvc_validity_s = validity;
+        RgvcOptions options;
+        options.validity_s = validity;
         SCOPED_TRACE("validity " + std::to_string(validity));
         for (const uint64_t seed : test::seedsToRun(5000, 20))
             test::withSeed(seed, [&] { runScene(seed, options, totals); });
@@ -114,8 +114,8 @@ TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
 TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
     SweepTotals totals;
     for (const int resolution : {3, 97}) {
-        CullerOptions options;
-        options.rgvc_grid_resolution = resolution;
+        RgvcOptions options;
+        options.grid_resolution = resolution;
         SCOPED_TRACE("resolution " + std::to_string(resolution));
         for (const uint64_t seed : test::seedsToRun(7000, 10))
             test::withSeed(seed, [&] { runScene(seed, options, totals); });
@@ -129,7 +129,7 @@ TEST(RgvcSweep, Full) {
     SweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(100000, scenes);
     for (const uint64_t seed : seeds)
-        test::withSeed(seed, [&] { runScene(seed, CullerOptions{}, totals); });
+        test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });
     report("full sweep", int(seeds.size()), totals);
     EXPECT_EQ(totals.false_culls, 0);
 }

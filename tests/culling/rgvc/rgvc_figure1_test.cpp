@@ -35,9 +35,9 @@ TEST(RgvcFigure1, SceneMatchesThePaperAndCullsConservatively) {
     EXPECT_EQ(dynamic, 300);
     EXPECT_GT(int(scene.objects.size()), dynamic);  // and some static walls
 
-    RgvcCuller rgvc(CullerOptions{});
+    RgvcCuller rgvc;
     VfcCuller vfc;
-    ExactOracle exact(CullerOptions{});
+    ExactOracle exact;
     rgvc.reset(scene);
     vfc.reset(scene);
     exact.reset(scene);

@@ -119,8 +119,8 @@ TEST(RgvcOcclusion, OccludersAndOccludedVoxelsAreSoundOnRandomScenes) {
     int64_t occluders = 0, occluded = 0;
     for (uint64_t seed = 1; seed <= 150; ++seed) {
         const Scene scene = test::rgvcRandomScene(seed);
-        RgvcCuller rgvc(CullerOptions{});
-        rgvc.setSnapshotEnabled(true);
+        RgvcCuller rgvc;
+        rgvc.setDebugCapture(true);
         rgvc.reset(scene);
         FrameResult out;
         for (int frame = 0; frame < test::kRgvcFrames; frame += 2) {

@@ -119,8 +119,8 @@ TEST(RgvcTraversal, VisitsEveryFrustumVoxelOnceInChessOrder) {
     int cameras = 0;
     for (uint64_t seed = 1; seed <= 300; ++seed) {
         const Scene scene = emptyScene(seed);
-        RgvcCuller rgvc(CullerOptions{});
-        rgvc.setSnapshotEnabled(true);
+        RgvcCuller rgvc;
+        rgvc.setDebugCapture(true);
         rgvc.reset(scene);
         FrameResult out;
         for (int frame = 0; frame < test::kRgvcFrames; frame += 3) {
@@ -166,8 +166,8 @@ void checkEmptySceneCamera(const Scene& base, const glm::dvec3& eye, double head
     Scene scene = base;
     const double h = glm::radians(heading_deg);
     test::setCamera(scene, eye, eye + glm::dvec3(std::cos(h), std::sin(h), 0) * 10.0, fov, 0.1, far);
-    RgvcCuller rgvc(CullerOptions{});
-    rgvc.setSnapshotEnabled(true);
+    RgvcCuller rgvc;
+    rgvc.setDebugCapture(true);
     rgvc.reset(scene);
     FrameResult out;
     const Camera camera = cameraAt(scene, 0.0);
@@ -224,8 +224,8 @@ TEST(RgvcTraversal, GridPointsGridLinesAndFarOutside) {
 TEST(RgvcTraversal, WithOccludersEachVoxelAtMostOnceAndNoneSkippedBeforeTheEnd) {
     for (uint64_t seed = 1; seed <= 200; ++seed) {
         const Scene scene = test::rgvcRandomScene(seed);
-        RgvcCuller rgvc(CullerOptions{});
-        rgvc.setSnapshotEnabled(true);
+        RgvcCuller rgvc;
+        rgvc.setDebugCapture(true);
         rgvc.reset(scene);
         FrameResult out;
         for (int frame = 0; frame < test::kRgvcFrames; ++frame) {

@@ -1,0 +1,52 @@
+// The subcommands of app/cli.h, each a CLI11 subcommand with its own options
+// (declared by its add function) and a run function called after parsing.
+// Internal to the command line.
+#pragma once
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli_options.h"
+
+namespace gridcull {
+
+struct CullCommand {
+    std::string scene, algo, out;
+    long long frames = -1;
+    KnobOptions knobs;
+};
+CLI::App* addCullCommand(CLI::App& app, CullCommand& c);
+int runCull(const CullCommand& c);
+
+struct BenchCommand {
+    std::string scene, algo, csv;
+    long long frames = -1, runs = 5;
+    bool no_quality = false;
+    KnobOptions knobs;
+};
+CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c);
+int runBench(const BenchCommand& c);
+
+// `shot` and `view` share the window's options.
+struct WindowCommand {
+    std::string scene, algo = "vfc", out, view = "main";
+    long long frame = 0, width = 1280, height = 720, exit_after = 0;
+    bool play = false;
+    KnobOptions knobs;
+};
+CLI::App* addShotCommand(CLI::App& app, WindowCommand& c);
+int runShot(const WindowCommand& c);
+CLI::App* addViewCommand(CLI::App& app, WindowCommand& c);
+int runView(const WindowCommand& c);
+
+struct KnobsCommand {
+    bool markdown = false;
+};
+CLI::App* addKnobsCommand(CLI::App& app, KnobsCommand& c);
+int runKnobs(const KnobsCommand& c);
+
+// Prints each note of KnobOptions::unusedNotes as "gridcull CMD: note: ...".
+void printUnusedNotes(const std::string& command, const KnobOptions& knobs,
+                      const std::vector<std::string>& algorithms);
+
+}  // namespace gridcull

@@ -1,0 +1,49 @@
+#include "culling/api/counters.h"
+
+namespace gridcull {
+
+namespace {
+
+constexpr std::array<CounterInfo, kCounterCount> kTable = {{
+    {Counter::VoxelsVisited, "voxels_visited",
+     "grid voxels the traversal reached in the view, occluded or not"},
+    {Counter::TbvCreated, "tbv_created",
+     "temporal bounding volumes made for hidden moving objects"},
+    {Counter::TbvExpired, "tbv_expired",
+     "temporal bounding volumes whose validity ran out (the object is looked at again)"},
+    {Counter::TbvRevealed, "tbv_revealed",
+     "temporal bounding volumes found visible before they expired"},
+    {Counter::ObjectUpdates, "object_updates",
+     "moving objects written into the culler's spatial structure this frame"},
+    {Counter::PixelQueries, "pixel_queries",
+     "reads of pixels from the culler's image to decide an occlusion test"},
+    {Counter::NodesVisited, "nodes_visited",
+     "hierarchy nodes the traversal took up, frustum-culled ones included"},
+    {Counter::TrianglesDrawn, "triangles_drawn",
+     "triangles of the objects the culler drew into its own image"},
+    {Counter::ObjectsTested, "objects_tested", "objects looked at one by one this frame"},
+    {Counter::PixelsSampled, "pixels_sampled", "pixels (3D) or rays (2D) the oracle evaluated"},
+    {Counter::OcclusionTests, "occlusion_tests",
+     "bounding volumes tested for occlusion against the culler's image"},
+    {Counter::PixelsRead, "pixels_read", "pixels read by the pixel queries"},
+    {Counter::CellUpdates, "cell_updates",
+     "pixel queries that read a whole grid cell to refresh its state"},
+    {Counter::BvhRebuilds, "bvh_rebuilds",
+     "bounding volume hierarchies rebuilt from scratch instead of refitted"},
+    {Counter::ProbabilitySkips, "probability_skips",
+     "pixel queries saved by rating a cell free from how little was drawn into it"},
+}};
+
+constexpr bool inCounterOrder() {
+    for (size_t i = 0; i < kTable.size(); ++i)
+        if (kTable[i].counter != Counter(i) || !kTable[i].name || !kTable[i].meaning) return false;
+    return true;
+}
+// A counter added to the enum needs its row here, in the same place.
+static_assert(inCounterOrder(), "kCounters must list every Counter once, in enum order");
+
+}  // namespace
+
+const std::array<CounterInfo, kCounterCount> kCounters = kTable;
+
+}  // namespace gridcull

@@ -1,0 +1,50 @@
+// Where an image-space culler draws the objects it rates potentially visible and
+// asks what it has drawn: an image of width x height pixels over exactly the
+// camera's frustum (raster/screen_mapping.h says how boxes map onto it), pixel
+// (0, 0) at the top left, depth the view-space distance along the camera's
+// forward axis.
+//
+// The culler does not know what holds the image: the software rasterizer
+// (raster/software_image_target.h) by default, or the app's OpenGL framebuffer,
+// which answers each query with a read-back as a GPU implementation would. A
+// family whose cullers take a target says so in its registry entry (draws_image),
+// and the app then offers each of its algorithms with OpenGL as NAME-gl.
+#pragma once
+#include "culling/api/pixel_rect.h"
+#include "culling/scene/camera.h"
+#include "culling/scene/scene.h"
+
+namespace gridcull {
+
+// The queries on the drawn image.
+class PixelQueries {
+public:
+    virtual ~PixelQueries() = default;
+    // Pixels of `rect` (inside the image) at which nothing has been drawn.
+    virtual long long countFree(const PixelRect& rect) const = 0;
+    // The farthest view-space depth in `rect` (inside the image); +infinity when a
+    // pixel there is empty.
+    virtual double farthestDepth(const PixelRect& rect) const = 0;
+};
+
+class ImageTarget : public PixelQueries {
+public:
+    // Starts a frame of width x height pixels seen by `camera`: every pixel free.
+    // occlusion_bits: countFree will be asked (a target may keep a one-bit
+    // coverage buffer for it).
+    virtual void begin(const Camera& camera, int width, int height, bool occlusion_bits) = 0;
+    // Draws `object` (index `index` in the scene) moved by `shift`. Returns false
+    // when it was rejected whole (nothing written); else sets `written` to the
+    // pixels it may have written. `image_area` is its box's rectangle, for a target
+    // that cannot tell which pixels it wrote.
+    virtual bool draw(const SceneObject& object, int index, const glm::dvec3& shift,
+                      const PixelRect& image_area, PixelRect& written) = 0;
+    // Called when the culler is reset for `scene`: size what draw needs for its
+    // meshes, so that draw never allocates.
+    virtual void prepare(const Scene& scene) = 0;
+    // The frame's last call: a target that queues work finishes it here, so that
+    // the frame's time includes it.
+    virtual void end() {}
+};
+
+}  // namespace gridcull

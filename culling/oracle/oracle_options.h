@@ -1,0 +1,33 @@
+// The exact oracle's knobs (culling/oracle/exact_oracle.h): how finely it
+// samples, which is the limit of what any test or the window can call a false
+// cull. They apply wherever the oracle runs (the window's false-cull check,
+// bench's quality columns), not only to `--algo exact`.
+#pragma once
+#include "culling/api/knobs.h"
+#include "culling/raster/id_depth_buffer.h"
+
+namespace gridcull {
+
+// The default image side of the oracle, and so of every image-space culler
+// that follows it.
+constexpr int kDefaultOracleResolution = kDefaultImageResolution;
+// The smallest values the flags take: below them the oracle resolves too little
+// to be worth calling exact.
+constexpr int kMinOracleResolution = 16;
+constexpr int kMinOracleRaysPerTurn = 64;
+// The largest the oracle honours, so that no option can ask for more memory than
+// a desktop has: 8192 x 4608 pixels take about 470 MiB (depth, id and parity per
+// pixel), 2^22 rays about 64 MiB.
+constexpr int kMaxOracleResolution = kMaxImageResolution;
+constexpr int kMaxOracleRaysPerTurn = 1 << 22;
+
+struct OracleOptions {
+    int resolution = kDefaultOracleResolution;  // 3D: pixels on the long side of the ID buffer
+    int rays_per_turn = 16384;                  // 2D: rays of the angular sweep per full turn
+};
+
+const KnobTable<OracleOptions>& oracleKnobs();
+// The oracle's options out of `values` (defaults where unset).
+OracleOptions oracleOptions(const KnobValues& values);
+
+}  // namespace gridcull

@@ -1,0 +1,64 @@
+#include "culling/raster/software_image_target.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace gridcull {
+
+long long SoftwarePixelQueries::countFree(const PixelRect& rect) const {
+    assert(obuffer_ && "the occlusion-buffer variant needs the occlusion buffer");
+    return obuffer_->countFree(rect);
+}
+
+double SoftwarePixelQueries::farthestDepth(const PixelRect& rect) const {
+    assert(zbuffer_ && "the z-buffer variant needs the z-buffer");
+    double farthest = 0.0;
+    for (int py = rect.y0; py <= rect.y1; ++py) {
+        const double* row = zbuffer_->depthRow(py);
+        for (int px = rect.x0; px <= rect.x1; ++px) farthest = std::max(farthest, row[px]);
+    }
+    return farthest;
+}
+
+void SoftwareImageTarget::prepare(const Scene& scene) {
+    size_t vertices = 0;
+    for (const SceneObject& object : scene.objects)
+        if (object.mesh) vertices = std::max(vertices, object.mesh->vertices.size());
+    zbuffer_.reserveMeshVertices(vertices);
+}
+
+void SoftwareImageTarget::begin(const Camera& camera, int width, int height,
+                                   bool occlusion_bits) {
+    zbuffer_.resize(width, height);
+    zbuffer_.begin(camera);
+    occlusion_bits_ = occlusion_bits;
+    if (occlusion_bits) {
+        obuffer_.resize(width, height);
+        obuffer_.clear();
+    }
+}
+
+bool SoftwareImageTarget::draw(const SceneObject& object, int index, const glm::dvec3& shift,
+                                  const PixelRect& /*image_area*/, PixelRect& written) {
+    bool drawn = false;
+    switch (object.shape) {
+        case ShapeKind::Sphere:
+            drawn = zbuffer_.drawSphere(index, object.center + shift, object.radius);
+            break;
+        case ShapeKind::Box:
+            drawn = zbuffer_.drawBox(index, object.box.translated(shift));
+            break;
+        case ShapeKind::Mesh:
+            if (object.mesh) drawn = zbuffer_.drawMesh(index, *object.mesh, object.center + shift);
+            break;
+        case ShapeKind::Polygon:
+            break;  // 2D only
+    }
+    if (!drawn) return false;
+    const ScreenRange cols = zbuffer_.lastDrawCols(), rows = zbuffer_.lastDrawRows();
+    written = {cols.lo, rows.lo, cols.hi, rows.hi};
+    if (occlusion_bits_) obuffer_.markDrawn(zbuffer_, written);
+    return true;
+}
+
+}  // namespace gridcull

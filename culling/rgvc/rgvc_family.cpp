@@ -1,0 +1,34 @@
+#include "culling/rgvc/rgvc_family.h"
+
+#include "culling/rgvc/rgvc_culler.h"
+#include "culling/rgvc/rgvc_options.h"
+
+namespace gridcull {
+
+const KnobTable<RgvcOptions>& rgvcKnobs() {
+    static const KnobTable<RgvcOptions> table{
+        knob("rgvc-validity", &RgvcOptions::validity_s, kMinRgvcValidity, kMaxRgvcValidity,
+             "seconds a TBV stays valid; shorter: fewer TBVs revealed but more object "
+             "updates"),
+        derivedKnob("rgvc-grid-res", &RgvcOptions::grid_resolution, 1, kMaxRgvcGridResolution,
+                    "scene", "the scene's grid.resolution",
+                    "voxels along the world's longest axis; finer: more voxels to traverse, "
+                    "tighter occlusion"),
+    };
+    return table;
+}
+
+FamilyEntry rgvcFamily() {
+    FamilyEntry family;
+    family.id = "rgvc";
+    family.title = "Regular-grid culling (Batagelo & Wu)";
+    family.algorithms = {{"rgvc", kRuns2d,
+                          "regular-grid culling with temporal bounding volumes"}};
+    family.knobs = rgvcKnobs().knobs();
+    family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
+        return std::make_unique<RgvcCuller>(rgvcKnobs().read(*request.knobs));
+    };
+    return family;
+}
+
+}  // namespace gridcull

@@ -1,0 +1,23 @@
+// Regular-grid culling's knobs (culling/rgvc/rgvc_culler.h).
+#pragma once
+#include "culling/api/knobs.h"
+
+namespace gridcull {
+
+// A TBV valid for less than a millisecond or longer than a day means nothing in
+// a scene of frames; 8192 is the 2D grid budget's side.
+constexpr double kMinRgvcValidity = 0.001;
+constexpr double kMaxRgvcValidity = 86400.0;
+constexpr int kMaxRgvcGridResolution = 8192;
+
+struct RgvcOptions {
+    // Validity period of a temporal bounding volume, seconds (> 0).
+    double validity_s = 0.5;
+    // Voxels along the world's longest axis, the other axis in proportion;
+    // 0 keeps the scene's grid.resolution.
+    int grid_resolution = 0;
+};
+
+const KnobTable<RgvcOptions>& rgvcKnobs();
+
+}  // namespace gridcull

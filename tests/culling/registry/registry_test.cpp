@@ -1,0 +1,150 @@
+// The family registry (culling/registry/registry.h): the algorithm names, the
+// dimensions each runs on, the knobs and their owners, making cullers by name,
+// and adding a family.
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "culling/baseline/vfc_culler.h"
+#include "culling/registry/registry.h"
+#include "tests/common/oracle_test_scenes.h"
+
+namespace gridcull {
+namespace {
+
+TEST(Registry, MakesEveryListedCullerUnderItsName) {
+    const std::vector<std::string> names = algorithmNames();
+    EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
+                                              "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
+    for (const std::string& name : names) {
+        std::string error;
+        auto culler = makeCuller(name, KnobValues{}, error);
+        ASSERT_TRUE(culler) << name << ": " << error;
+        EXPECT_EQ(std::string(culler->name()), name);
+        EXPECT_TRUE(error.empty());
+    }
+}
+
+TEST(Registry, UnknownNameIsAnErrorThatListsTheKnownOnes) {
+    std::string error;
+    EXPECT_EQ(makeCuller("rgvcc", KnobValues{}, error), nullptr);
+    EXPECT_NE(error.find("rgvcc"), std::string::npos) << error;
+    for (const std::string& name : algorithmNames())
+        EXPECT_NE(error.find(name), std::string::npos) << error;
+    error.clear();
+    EXPECT_EQ(makeCuller("", KnobValues{}, error), nullptr);
+    EXPECT_FALSE(error.empty());
+}
+
+TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
+    EXPECT_EQ(algorithmNames(2), (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
+    EXPECT_EQ(algorithmNames(3), (std::vector<std::string>{"all", "vfc", "exact", "lazy-grid",
+                                                          "lazy-grid-z", "busy-grid",
+                                                          "busy-grid-tight"}));
+    std::string why;
+    EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));
+    EXPECT_TRUE(algorithmFits("lazy-grid", test::scene3d(), why));
+    EXPECT_FALSE(algorithmFits("lazy-grid", test::scene2d(), why));
+    EXPECT_EQ(why,
+              "lazy-grid runs on 3D scenes only, and this scene is 2D; algorithms for it: all, "
+              "vfc, exact, rgvc");
+    EXPECT_FALSE(algorithmFits("nope", test::scene2d(), why));
+    EXPECT_NE(why.find("unknown algorithm 'nope'"), std::string::npos) << why;
+}
+
+TEST(Registry, KnobsAreUniqueAndNamedAfterTheirFamily) {
+    std::set<std::string> flags;
+    for (const Knob* knob : allKnobs()) {
+        EXPECT_TRUE(flags.insert(knob->flag).second) << knob->flag;
+        const FamilyEntry* family = familyOfKnob(knob->flag);
+        ASSERT_TRUE(family) << knob->flag;
+        EXPECT_EQ(findKnob(knob->flag), knob);
+        // The prefix says whose knob it is: "lazy-" for "lazy-grid", "oracle-", "rgvc-".
+        const std::string prefix = family->id.substr(0, family->id.find('-')) + "-";
+        EXPECT_EQ(knob->flag.compare(0, prefix.size(), prefix), 0) << knob->flag;
+        EXPECT_LE(knob->min, knob->max) << knob->flag;
+        if (knob->automatic.empty()) {
+            EXPECT_GE(knob->default_value, knob->min) << knob->flag;
+            EXPECT_LE(knob->default_value, knob->max) << knob->flag;
+        }
+        EXPECT_FALSE(knob->help.empty()) << knob->flag;
+    }
+    EXPECT_EQ(findKnob("grid-res"), nullptr);
+    EXPECT_EQ(findKnob("cell-size"), nullptr);
+}
+
+TEST(Registry, TheReferenceResolutionIsTheOracles) {
+    KnobValues knobs;
+    EXPECT_EQ(referenceResolution(knobs), 1024);
+    knobs.set("oracle-res", 640);
+    EXPECT_EQ(referenceResolution(knobs), 640);
+}
+
+TEST(Registry, OnlyFamiliesThatDrawAnImageTakeATarget) {
+    std::string error;
+    struct NoTarget : ImageTarget {
+        void begin(const Camera&, int, int, bool) override {}
+        bool draw(const SceneObject&, int, const glm::dvec3&, const PixelRect&,
+                  PixelRect&) override {
+            return false;
+        }
+        void prepare(const Scene&) override {}
+        long long countFree(const PixelRect&) const override { return 0; }
+        double farthestDepth(const PixelRect&) const override { return 0.0; }
+    };
+    EXPECT_EQ(makeCuller("vfc", KnobValues{}, error, std::make_unique<NoTarget>()), nullptr);
+    EXPECT_NE(error.find("vfc draws no image"), std::string::npos) << error;
+    auto culler = makeCuller("lazy-grid", KnobValues{}, error, std::make_unique<NoTarget>(),
+                             "lazy-grid-test");
+    ASSERT_TRUE(culler) << error;
+    EXPECT_STREQ(culler->name(), "lazy-grid-test");
+}
+
+FamilyEntry toyFamily(const std::string& id, const std::string& algorithm, const std::string& knob) {
+    FamilyEntry family;
+    family.id = id;
+    family.title = "toy";
+    family.algorithms = {{algorithm, kRuns3d, "toy"}};
+    if (!knob.empty()) {
+        Knob k;
+        k.flag = knob;
+        k.min = 0;
+        k.max = 1;
+        k.help = "toy";
+        family.knobs.push_back(k);
+    }
+    family.make = [](CullerRequest&) { return std::make_unique<VfcCuller>(); };
+    return family;
+}
+
+TEST(Registry, AddsAFamilyWithNewNamesOnly) {
+    std::string error;
+    EXPECT_FALSE(registerFamily(toyFamily("rgvc", "toy-a", ""), error));
+    EXPECT_NE(error.find("family 'rgvc'"), std::string::npos) << error;
+    EXPECT_FALSE(registerFamily(toyFamily("toy", "vfc", ""), error));
+    EXPECT_NE(error.find("'vfc' is taken"), std::string::npos) << error;
+    EXPECT_FALSE(registerFamily(toyFamily("toy", "toy-a", "lazy-cell-size"), error));
+    EXPECT_NE(error.find("--lazy-cell-size is taken"), std::string::npos) << error;
+    FamilyEntry empty = toyFamily("toy", "toy-a", "");
+    empty.algorithms.clear();
+    EXPECT_FALSE(registerFamily(empty, error));
+
+    const size_t before = families().size();
+    ASSERT_TRUE(registerFamily(toyFamily("toy", "toy-a", "toy-knob"), error)) << error;
+    EXPECT_EQ(families().size(), before + 1);
+    EXPECT_EQ(algorithmNames(3).back(), "toy-a");
+    EXPECT_EQ(algorithmNames(2).back(), "rgvc");
+    EXPECT_TRUE(makeCuller("toy-a", KnobValues{}, error));
+    ASSERT_TRUE(familyOfKnob("toy-knob"));
+    EXPECT_EQ(familyOfKnob("toy-knob")->id, "toy");
+    unregisterFamily("toy");
+    unregisterFamily("rgvc");  // built in: stays
+    EXPECT_EQ(families().size(), before);
+    EXPECT_TRUE(findFamily("rgvc"));
+    EXPECT_FALSE(findFamily("toy"));
+}
+
+}  // namespace
+}  // namespace gridcull

@@ -1,0 +1,115 @@
+// The debugger's culling side (ui/debugger_session.h): scrubbing, algorithm
+// switches and a frozen culling camera must give what running the frames in
+// order gives; and the per-object states must name false culls.
+#include "ui/debugger_session.h"
+
+#include <gtest/gtest.h>
+
+#include "ui/object_states.h"
+#include "culling/io/scene_loader.h"
+
+namespace gridcull {
+namespace {
+
+// A small oracle keeps the test fast; what is compared is consistency, not accuracy.
+KnobValues fastOptions() {
+    KnobValues knobs;
+    knobs.set("oracle-res", 96);
+    knobs.set("oracle-rays", 2048);
+    return knobs;
+}
+
+TEST(DebuggerSession, ScrubbingBackRerunsFromFrameZero) {
+    const Scene scene = defaultScene();
+    DebuggerSession session(fastOptions());
+    std::string error;
+    ASSERT_TRUE(session.open(scene, "", "vfc", error)) << error;
+    EXPECT_EQ(session.frame(), 0);
+    session.seek(12);
+    EXPECT_EQ(session.frame(), 12);
+    session.seek(5);
+    EXPECT_EQ(session.frame(), 5);
+    const std::vector<int> after_scrub = session.result().pvs;
+
+    DebuggerSession fresh(fastOptions());
+    ASSERT_TRUE(fresh.open(scene, "", "vfc", error)) << error;
+    for (int f = 1; f <= 5; ++f) ASSERT_TRUE(fresh.step());
+    EXPECT_EQ(fresh.frame(), 5);
+    EXPECT_EQ(after_scrub, fresh.result().pvs);
+    EXPECT_FALSE(after_scrub.empty());
+    EXPECT_EQ(session.history().pvs_size[5], float(after_scrub.size()));
+    EXPECT_EQ(session.history().exact_visible[5], float(session.exactResult().pvs.size()));
+}
+
+TEST(DebuggerSession, SeekClampsAndStepStopsAtTheEnd) {
+    const Scene scene = defaultScene();
+    DebuggerSession session(fastOptions());
+    std::string error;
+    ASSERT_TRUE(session.open(scene, "", "vfc", error)) << error;
+    session.seek(scene.frames + 50);
+    EXPECT_EQ(session.frame(), scene.frames - 1);
+    EXPECT_FALSE(session.step());
+    EXPECT_EQ(session.frame(), scene.frames - 1);
+    session.seek(-3);
+    EXPECT_EQ(session.frame(), 0);
+}
+
+TEST(DebuggerSession, AllAlgorithmKeepsEverythingAndNeverFalseCulls) {
+    const Scene scene = defaultScene();
+    DebuggerSession session(fastOptions());
+    std::string error;
+    ASSERT_TRUE(session.open(scene, "", "vfc", error)) << error;
+    session.seek(8);
+    ASSERT_TRUE(session.selectAlgorithm("all", error)) << error;
+    EXPECT_EQ(session.frame(), 8);
+    EXPECT_EQ(session.result().pvs.size(), scene.objects.size());
+    EXPECT_TRUE(session.falseCulled().empty());
+    for (ObjectState state : session.states())
+        EXPECT_TRUE(state == ObjectState::Visible || state == ObjectState::Hidden);
+    EXPECT_FALSE(session.selectAlgorithm("no-such-culler", error));
+    EXPECT_FALSE(error.empty());
+    EXPECT_EQ(session.algo(), "all");
+}
+
+TEST(DebuggerSession, FrozenCameraStaysWhileTimeMoves) {
+    const Scene scene = defaultScene();
+    DebuggerSession session(fastOptions());
+    std::string error;
+    ASSERT_TRUE(session.open(scene, "", "vfc", error)) << error;
+    session.seek(3);
+    const Camera at3 = session.cullingCamera();
+    session.setCullingCameraFrozen(true);
+    session.seek(30);
+    EXPECT_TRUE(session.cullingCameraFrozen());
+    EXPECT_EQ(session.cullingCamera().position, at3.position);
+    EXPECT_EQ(session.cullingCamera().target, at3.target);
+    session.setCullingCameraFrozen(false);
+    EXPECT_EQ(session.frame(), 30);
+    EXPECT_EQ(session.cullingCamera().position, cameraAt(scene, scene.timeOfFrame(30)).position);
+}
+
+TEST(ObjectStates, ComparesPvsWithTheOracle) {
+    Scene scene;
+    for (int id : {4, 1, 3, 2}) {
+        SceneObject object;
+        object.id = id;
+        object.radius = 1.0;
+        scene.objects.push_back(object);
+    }
+    scene.finalize();
+    std::vector<ObjectState> states;
+    std::vector<int> false_culled;
+    classifyObjects(scene, {1, 2}, {2, 3}, states, false_culled);
+    ASSERT_EQ(states.size(), 4u);
+    EXPECT_EQ(states[size_t(scene.indexOf(1))], ObjectState::Hidden);
+    EXPECT_EQ(states[size_t(scene.indexOf(2))], ObjectState::Visible);
+    EXPECT_EQ(states[size_t(scene.indexOf(3))], ObjectState::FalseCulled);
+    EXPECT_EQ(states[size_t(scene.indexOf(4))], ObjectState::Culled);
+    EXPECT_EQ(false_culled, std::vector<int>{3});
+    // Unknown ids are ignored rather than trusted.
+    classifyObjects(scene, {1, 99}, {99}, states, false_culled);
+    EXPECT_TRUE(false_culled.empty());
+}
+
+}  // namespace
+}  // namespace gridcull

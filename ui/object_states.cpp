@@ -1,0 +1,31 @@
+#include "ui/object_states.h"
+
+#include <algorithm>
+
+namespace gridcull {
+
+void classifyObjects(const Scene& scene, const std::vector<int>& pvs,
+                     const std::vector<int>& exact, std::vector<ObjectState>& states,
+                     std::vector<int>& false_culled) {
+    states.assign(scene.objects.size(), ObjectState::Culled);
+    for (int id : pvs) {
+        const int index = scene.indexOf(id);
+        if (index >= 0) states[size_t(index)] = ObjectState::Hidden;
+    }
+    // Seen by the oracle: visible when the culler kept it, a false cull when not.
+    false_culled.clear();
+    for (int id : exact) {
+        const int index = scene.indexOf(id);
+        if (index < 0) continue;
+        ObjectState& state = states[size_t(index)];
+        if (state == ObjectState::Hidden) {
+            state = ObjectState::Visible;
+        } else if (state == ObjectState::Culled) {
+            state = ObjectState::FalseCulled;
+            false_culled.push_back(id);
+        }
+    }
+    std::sort(false_culled.begin(), false_culled.end());
+}
+
+}  // namespace gridcull
