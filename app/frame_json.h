@@ -1,4 +1,4 @@
-// One frame of `gridcull cull` output as a JSON line (shared/spec/cli.md):
+// One frame of `gridcull cull` output as a JSON line (README.md, "Command line"):
 // {"frame":F,"t":T,"algo":A,"camera":{"position":[..],"target":[..]},"pvs":[..],"stats":{..}}
 // Vectors have the scene's dimension count. Numbers use the shortest text that
 // reads back to the same double, so a line can be compared exactly.

@@ -10,8 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-"$root/build-goldens"}
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build" --target gridcull -j2
-exe="$build/app/gridcull"
+cmake --build "$build" --target gridcull gridcull-toy -j2
 
 run() {
     if [ -n "${DISPLAY:-}" ]; then
@@ -25,6 +24,10 @@ mkdir -p "$root/screenshots"
 grep -v '^[[:space:]]*#' "$root/tests/screenshots/cases.txt" | grep -v '^[[:space:]]*$' |
 while read -r name scene frame view algo width height extra; do
     echo "screenshots/$name.png: $scene frame $frame, view $view, algo $algo, ${width}x$height $extra"
+    exe="$build/app/gridcull"
+    case "$extra" in
+    via:gridcull-toy*) exe="$build/tests/gridcull-toy"; extra=${extra#via:gridcull-toy} ;;
+    esac
     # $extra unquoted: it is zero or more further shot flags.
     # shellcheck disable=SC2086
     LIBGL_ALWAYS_SOFTWARE=1 run "$exe" shot "$root/$scene" --frame "$frame" --view "$view" \

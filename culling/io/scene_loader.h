@@ -1,4 +1,4 @@
-// Loads and validates a scene file (shared/spec/scene-format.md).
+// Loads and validates a scene file (docs/scene-format.md).
 // Bad input never throws out of here and never crashes: every problem found is
 // returned as one message "FILE: json.path: what was expected, got what".
 #pragma once

@@ -1,6 +1,6 @@
 // The 2D view frustum of regular-grid culling (Batagelo & Wu, section 4.2): the
 // wedge of fov_deg (up to 360) around the view direction, with its apex at the
-// camera, cut at `far` (shared/spec/scene-format.md, "Camera"; 2D has no near
+// camera, cut at `far` (docs/scene-format.md, "Camera"; 2D has no near
 // plane). World units, x-y plane.
 //
 // "A voxel is in the frustum" here means: the closed voxel square meets the

@@ -1,4 +1,4 @@
-// A scene (shared/spec/scene-format.md): objects with shape, motion and maximum
+// A scene (docs/scene-format.md): objects with shape, motion and maximum
 // speed, a camera path, and the grid the regular-grid algorithms use.
 // World units throughout; 2D scenes live in the x-y plane with z = 0.
 // Every object moves by translation only: its shape is given at t = 0 and

@@ -1,4 +1,4 @@
-// The command line's contract (shared/spec/cli.md): help, version, exit statuses.
+// The command line's contract (README.md, "Command line"): help, version, exit statuses.
 #include <gtest/gtest.h>
 
 #include "run_command.h"

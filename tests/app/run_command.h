@@ -31,12 +31,11 @@ inline std::string scratchDir() {
     return dir;
 }
 
-// `args` is appended to the executable's path as shell text.
-inline CommandResult runGridcull(const std::string& args) {
+// Runs `command` (shell text) with no input.
+inline CommandResult runCommand(const std::string& command) {
     static int counter = 0;
     const std::string base = scratchDir() + "/cmd" + std::to_string(counter++);
-    const std::string cmd = std::string("'") + GRIDCULL_EXE + "' " + args + " >'" + base +
-                            ".out' 2>'" + base + ".err' </dev/null";
+    const std::string cmd = command + " >'" + base + ".out' 2>'" + base + ".err' </dev/null";
     const int raw = std::system(cmd.c_str());
     CommandResult r;
     r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
@@ -47,6 +46,11 @@ inline CommandResult runGridcull(const std::string& args) {
     std::remove((base + ".out").c_str());
     std::remove((base + ".err").c_str());
     return r;
+}
+
+// `args` is appended to the executable's path as shell text.
+inline CommandResult runGridcull(const std::string& args) {
+    return runCommand(std::string("'") + GRIDCULL_EXE + "' " + args);
 }
 
 inline std::string sourcePath(const std::string& relative) {

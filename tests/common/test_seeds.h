@@ -1,4 +1,4 @@
-// Seeds for randomized tests (issue 5: "a --seed on every random test"). A test
+// Seeds for randomized tests ("a --seed on every random test"). A test
 // loops over seedsToRun(first, count); the environment variable GRIDCULL_SEED,
 // when set, replaces those seeds by that one. withSeed() runs one seed's body
 // and, if it failed, adds a failure that names the seed and the one command

@@ -1,5 +1,5 @@
-// Comparing two RGBA images the way the golden tests do (shared/design.md,
-// "Screenshots"): a pixel fails when any channel differs by more than a
+// Comparing two RGBA images the way the golden tests do (README.md,
+// "Screenshot tests"): a pixel fails when any channel differs by more than a
 // tolerance; the images match when few enough pixels fail.
 #pragma once
 #include <cstdint>

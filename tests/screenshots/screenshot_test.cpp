@@ -1,4 +1,4 @@
-// Golden-image tests of `gridcull shot` (shared/design.md, "Screenshots"). Each
+// Golden-image tests of `gridcull shot` (README.md, "Screenshot tests"). Each
 // case of cases.txt is rendered by the real executable with Mesa's software
 // renderer (under xvfb-run when there is no X display) and compared with
 // screenshots/NAME.png: a pixel fails when a channel differs by more than
@@ -29,7 +29,12 @@ struct ShotCase {
     std::string view, algo;
     int width = 0, height = 0;
     std::string extra;  // the rest of the line: more shot flags, passed as they are
+    std::string exe = GRIDCULL_EXE;
 };
+
+// A case whose flags start with this is drawn by gridcull-toy, the executable
+// with the test-only toy family registered (tests/common/toy_family).
+constexpr const char* kViaToy = "via:gridcull-toy";
 
 // gtest names cases by this instead of dumping their bytes.
 void PrintTo(const ShotCase& c, std::ostream* os) { *os << c.name; }
@@ -44,6 +49,11 @@ std::vector<ShotCase> loadCases() {
         ShotCase c;
         if (fields >> c.name >> c.scene >> c.frame >> c.view >> c.algo >> c.width >> c.height) {
             std::getline(fields, c.extra);
+            const size_t via = c.extra.find(kViaToy);
+            if (via != std::string::npos) {
+                c.extra.erase(via, std::string(kViaToy).size());
+                c.exe = GRIDCULL_TOY_EXE;
+            }
             cases.push_back(c);
         }
     }
@@ -60,7 +70,7 @@ int runShot(const ShotCase& c, const std::string& out_png, std::string& log) {
     std::string command = std::string("LIBGL_ALWAYS_SOFTWARE=1 ");
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) command += "xvfb-run -a -s '-screen 0 1280x720x24' ";
-    command += quoted(GRIDCULL_EXE) + " shot " + quoted((source / c.scene).string()) +
+    command += quoted(c.exe) + " shot " + quoted((source / c.scene).string()) +
                " --frame " + std::to_string(c.frame) + " --view " + c.view + " --algo " +
                c.algo + " --width " + std::to_string(c.width) + " --height " +
                std::to_string(c.height) + " " + c.extra + " --out " + quoted(out_png) + " > " +

@@ -1,4 +1,4 @@
-// The scene loader against the format (shared/spec/scene-format.md): every
+// The scene loader against the format (docs/scene-format.md): every
 // malformed file under tests/scenes/bad is rejected with a message naming the
 // place (tests/scenes/bad/expected.tsv), every shipped scene loads, defaults,
 // id numbering and 2D storage follow the format, and no input makes it throw.

@@ -1,4 +1,4 @@
-// Extremes of the camera (issue 5, items 1, 2 and 8), every algorithm against the
+// Extremes of the camera, every algorithm against the
 // exact oracle (extremes_harness.h):
 //  1. the camera exactly on voxel corners, edges and faces (of inner voxels and of
 //     the world box), looking exactly along +-X, +-Y, +-Z, with frustum planes

@@ -1,4 +1,4 @@
-// Extremes of scene geometry (issue 5, items 3 and 5), every algorithm against
+// Extremes of scene geometry, every algorithm against
 // the exact oracle (extremes_harness.h):
 //  3. a wall with a gap one voxel wide (aligned to the voxels, and straddling two
 //     of them) and one narrower than a voxel, at the centre, the edge and the

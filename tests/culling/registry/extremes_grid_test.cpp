@@ -1,7 +1,7 @@
-// Extremes of the grid (issue 5, item 7), every algorithm against the exact
+// Extremes of the grid, every algorithm against the exact
 // oracle (extremes_harness.h): grids of 1 x 1 (x 1), 1 x N and N x 1, odd and
-// non-power-of-two sizes (so voxels are far from square), the sizes the issue
-// names (1024 x 1024 in 2D, 256^3 in 3D) and the largest the scene format
+// non-power-of-two sizes (so voxels are far from square), typical working
+// sizes (1024 x 1024 in 2D, 256^3 in 3D) and the largest the scene format
 // allows, kMaxGridVoxels = 2^26 voxels (8192 x 8192 in 2D; 406^3, 407 x 406 x
 // 406 or 8192 x 8192 x 1 in 3D). A
 // resolution beyond the budget is rejected before anything is allocated, by
@@ -62,7 +62,7 @@ TEST(ExtremesGrid, DegenerateOddAndNonPowerOfTwoGrids) {
 }
 
 TEST(ExtremesGrid, LargeGrids) {
-    // The sizes the issue names, then the largest the voxel budget allows.
+    // Typical working sizes, then the largest the voxel budget allows.
     test::runExtremeCase(gridCase(2, {1024, 1024, 1}, 60, 3));
     test::runExtremeCase(gridCase(3, {256, 256, 256}, 60, 2));
     test::runExtremeCase(gridCase(3, {406, 406, 406}, 30, 1));

@@ -1,4 +1,4 @@
-// Monotonicity on seeded random scenes (issue 5, item 9). With S a scene, O an
+// Monotonicity on seeded random scenes. With S a scene, O an
 // extra occluder and R one of S's objects, a PVS function P is monotone when
 //   adding:   P(S + O) - {O} is a subset of P(S)  (an occluder never reveals), and
 //   removing: P(S - R) contains P(S) - {R}        (removing one never hides).

@@ -1,4 +1,4 @@
-// Far from the origin (issue 5, item 4): the same scene and camera path shifted
+// Far from the origin: the same scene and camera path shifted
 // by 1e4, 1e6 and 1e7 on every axis. Every algorithm must stay free of false
 // culls against the oracle on the shifted scene (extremes_harness.h); results
 // may only get looser. The oracle computes in doubles (about 2e-9 apart at

@@ -1,4 +1,4 @@
-// Extremes of the view (issue 5, item 6), every algorithm against the exact
+// Extremes of the view, every algorithm against the exact
 // oracle (extremes_harness.h): fields of view of 0.01, 1, 90 and 179 degrees in
 // 3D and from 0.01 up to 360 in 2D; a tiny near plane; a far plane far beyond the
 // world, and one that cuts the scene. Also 1e-6 and 179.999 degrees, which
