@@ -22,7 +22,7 @@ constexpr std::string_view kGlSuffix = "-gl";
 
 // Every name --algo takes in `cull` and `bench`: the registry's, then the -gl ones.
 std::vector<std::string> appAlgorithmNames();
-// The registry name behind `name` ("lazy-grid" for "lazy-grid-gl"), or "" when
+// The registry name behind `name` ("NAME" for "NAME-gl"), or "" when
 // `name` is neither a registry algorithm nor one of its -gl variants.
 std::string registryAlgorithmOf(std::string_view name);
 // makeCuller, and the -gl cullers. nullptr with `error` set when it cannot.

@@ -76,7 +76,7 @@ std::string formatBenchTable(const std::vector<AlgoBench>& benches, int frames, 
     // Ratios against the first algorithm listed: on a shared, noisy machine the
     // ratio of two algorithms timed in the same run is what holds.
     const double base = sums.front().median_ms;
-    // The algo column fits the longest label (variants like lazy-grid:cell-size=8).
+    // The algo column fits the longest label (entries like NAME:FLAG=VALUE).
     int width = 14;
     for (const auto& b : benches) width = std::max(width, int(b.algo.size()));
     std::string out;

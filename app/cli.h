@@ -29,8 +29,8 @@ bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, s
                      const std::vector<std::string>& known);
 
 // One entry of bench's --algo list: NAME, or NAME:FLAG=VALUE[:FLAG=VALUE...] where
-// each FLAG is a knob's flag without its dashes (lazy-cell-size, rgvc-validity,
-// ...), set over the command's own knobs, so that one run can time the same
+// each FLAG is a knob's flag without its dashes (oracle-res, ...; `gridcull knobs`
+// lists them), set over the command's own knobs, so that one run can time the same
 // algorithm at several settings side by side. `label` is the entry as written.
 struct AlgoVariant {
     std::string label;
@@ -41,7 +41,7 @@ bool parseAlgoVariants(const std::string& list, const KnobValues& base,
                        std::vector<AlgoVariant>& variants, std::string& error);
 
 // One line naming every knob's value, printed by bench so a table says what it
-// measured: "oracle-res=1024 oracle-rays=16384 rgvc-validity=0.5 ...".
+// measured: "oracle-res=1024 oracle-rays=16384 ...".
 std::string describeKnobs(const KnobValues& knobs);
 
 }  // namespace gridcull

@@ -5,6 +5,7 @@
 // measured in the first run by a separate, untimed oracle.
 #include <unistd.h>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -54,6 +55,27 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
     return missing;
 }
 
+// An example of entries with knobs of their own, from the registry: the first
+// family's first knob with a plain default, at a quarter and at twice it.
+std::string variantExample() {
+    for (const FamilyEntry& family : families()) {
+        if (family.id == "oracle") continue;  // its knobs apply to the reference, not a culler
+        for (const Knob& knob : family.knobs) {
+            if (!knob.automatic.empty() || knob.default_value <= 0.0) continue;
+            double low = std::clamp(knob.default_value / 4, knob.min, knob.max);
+            double high = std::clamp(knob.default_value * 2, knob.min, knob.max);
+            if (knob.kind == KnobKind::Integer) {
+                low = std::round(low);
+                high = std::round(high);
+            }
+            const std::string entry = family.algorithms.front().name + ":" + knob.flag + "=";
+            return entry + knobValueText(knob, low) + "," + entry + knobValueText(knob, high) +
+                   "\ntimes two values of --" + knob.flag + " side by side.";
+        }
+    }
+    return "";
+}
+
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
@@ -65,9 +87,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
         "listed, the mean PVS size, the mean exact visible count, PVS/exact, the false\n"
         "culls (ids the exact oracle sees that the PVS lacks) and the frames that had any,\n"
         "the mean triangles of the PVS, and each algorithm's counters per frame.\n"
-        "An --algo entry may set knobs for itself: NAME:FLAG=VALUE[:FLAG=VALUE], e.g.\n"
-        "lazy-grid:lazy-cell-size=8,lazy-grid:lazy-cell-size=64 times two cell sizes side\n"
-        "by side. Quote ratios, not milliseconds: the machine may be shared.");
+        "An --algo entry may set knobs for itself: NAME:FLAG=VALUE[:FLAG=VALUE], e.g.\n" +
+            variantExample() + "\nQuote ratios, not milliseconds: the machine may be shared.");
     cmd->add_option("SCENE", c.scene, "the scene file")->required()->type_name("");
     cmd->add_option("--algo", c.algo, "algorithms, comma-separated (listed below)")
         ->required()

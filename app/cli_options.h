@@ -47,8 +47,8 @@ std::shared_ptr<CLI::Formatter> helpFormatter();
 // limits, so help cannot drift from them. Every culling command's help ends with it.
 std::string cullingHelpFooter(const std::vector<std::string>& algorithms);
 
-// "gridcull CMD: " + CLI11's message, and a hint when an unknown option is the
-// tail of a knob's flag (--cell-size: "did you mean --lazy-cell-size?").
+// CLI11's message, and a hint when an unknown option is the tail of a knob's
+// flag (--rays: "did you mean --oracle-rays?").
 std::string parseErrorMessage(const CLI::ParseError& error);
 
 }  // namespace gridcull

@@ -1,6 +1,6 @@
 // What a culler shows of its internal state to the window and to tests: the
-// family's own snapshot struct (the rgvc matrices and traversal, the lazy grid's
-// cells and tests, ...), captured only while Culler::setDebugCapture(true).
+// family's own snapshot struct (its matrices, traversal, cells, tests, ...),
+// captured only while Culler::setDebugCapture(true).
 //
 // Shared code holds it as `const DebugSnapshot*` and never looks inside; the
 // family's own code gets its type back with as<T>(), a checked cast by the

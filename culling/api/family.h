@@ -1,8 +1,8 @@
 // What an algorithm family gives the registry (culling/registry/registry.h): its
 // algorithms with the dimensions each runs on, its knobs, and how to make a
 // culler. One FamilyEntry per family, made by a function in the family's own
-// folder (e.g. rgvcFamily() in culling/rgvc/rgvc_family.h); the registry lists
-// those functions and nothing else of the family. The family's window side
+// folder (culling/<family>/<family>_family.h); the registry lists those
+// functions and nothing else of the family. The family's window side
 // (panel, overlay, view flags) is its entry in the ui registry, under the same id.
 #pragma once
 #include <functional>
@@ -20,7 +20,7 @@ namespace gridcull {
 enum DimensionMask : int { kRuns2d = 1, kRuns3d = 2, kRunsBoth = kRuns2d | kRuns3d };
 
 struct AlgorithmEntry {
-    std::string name;  // as --algo takes it, e.g. "lazy-grid-z"
+    std::string name;  // as --algo takes it, e.g. "vfc"
     int dimensions = kRunsBoth;
     std::string summary;  // one line for help and the window
 };
@@ -38,8 +38,8 @@ struct CullerRequest {
 };
 
 struct FamilyEntry {
-    std::string id;     // e.g. "rgvc"; the ui registry's key for its panel and overlay
-    std::string title;  // e.g. "Regular-grid culling (Batagelo & Wu 2002)"
+    std::string id;     // e.g. "baseline"; the ui registry's key for its panel and overlay
+    std::string title;  // e.g. "Baselines": how help and the window name the family
     std::vector<AlgorithmEntry> algorithms;
     std::vector<Knob> knobs;  // its options (its KnobTable's knobs())
     bool draws_image = false;  // its cullers take a CullerRequest::target

@@ -8,8 +8,8 @@
 //
 // Values travel between those places as KnobValues: the values set so far, by
 // flag; a family reads its struct out of them with its table. Flags start with
-// their family's prefix ("rgvc-", "lazy-", "oracle-"), so that two families'
-// knobs never share a name.
+// their family's prefix (the oracle's "oracle-"), so that two families' knobs
+// never share a name.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -25,7 +25,7 @@ namespace gridcull {
 enum class KnobKind : uint8_t { Integer, Real };
 
 struct Knob {
-    std::string flag;  // without the dashes, e.g. "lazy-cell-size"
+    std::string flag;  // without the dashes, e.g. "oracle-res"
     KnobKind kind = KnobKind::Real;
     double min = 0.0, max = 0.0;  // the accepted values, inclusive
     // The value when none is set. It lies in [min, max], unless `automatic` is
@@ -38,7 +38,7 @@ struct Knob {
 
 // Reads `text` as a value of `knob`: an integer (Integer) or a finite number
 // (Real) within [min, max], nothing else. False with `error` saying what was
-// expected, e.g. "option --lazy-cell-size: expected an integer from 1 to 1024, got '0'".
+// expected, e.g. "option --oracle-res: expected an integer from 16 to 8192, got '0'".
 bool parseKnobValue(const Knob& knob, const std::string& text, double& value, std::string& error);
 // "from 1 to 1024", "from 0.001 to 86400".
 std::string knobRangeText(const Knob& knob);
@@ -65,8 +65,8 @@ private:
 };
 
 // The knobs of one options struct. Build it with knob() and derivedKnob():
-//   const KnobTable<LazyGridOptions> table{
-//       knob("lazy-cell-size", &LazyGridOptions::cell_size, 1, 1024, "..."), ...};
+//   const KnobTable<OracleOptions> table{
+//       knob("oracle-res", &OracleOptions::resolution, 16, 8192, "..."), ...};
 template <class Options>
 class KnobTable {
 public:

@@ -1,5 +1,5 @@
-// `exact`: the reference visible set. Every conservative culler (vfc, rgvc, the
-// lazy grids, bsp-oq, hzb-tbv) is tested against it: its PVS must contain every id
+// `exact`: the reference visible set. Every conservative culler (vfc and every
+// occlusion-culling family) is tested against it: its PVS must contain every id
 // this oracle reports at the same frame. It shares no code with any culling
 // algorithm (only the scene, the camera and culling/scene/ray_intersect.h), keeps no
 // state between frames, and never over-estimates by design.

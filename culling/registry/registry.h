@@ -1,5 +1,5 @@
 // The family registry: the one table of every algorithm family (the baselines,
-// the oracle, regular-grid culling, the lazy occlusion grid, ...). The command
+// the oracle, and each occlusion-culling family). The command
 // line's --algo list and help, bench's NAME:FLAG=VALUE entries, the window's
 // culler list and knobs and docs/LIMITS.md's knob table all come from it, so a
 // family is added by one line in registry.cpp (and one in the ui registry for
@@ -36,7 +36,7 @@ std::vector<std::string> algorithmNames(int dimensions = 0);
 std::string algorithmList(int dimensions = 0);
 
 // Whether algorithm `name` runs on `scene`; else `why` names the dimension, e.g.
-// "lazy-grid runs on 3D scenes only, and this scene is 2D; ...".
+// "NAME runs on 3D scenes only, and this scene is 2D; algorithms for it: ...".
 bool algorithmFits(std::string_view name, const Scene& scene, std::string& why);
 
 // Every knob of every family, in registry order, and the one with `flag`.
@@ -52,7 +52,7 @@ int referenceResolution(const KnobValues& knobs);
 // Makes the culler named `name` with `knobs`, or returns nullptr and sets
 // `error` ("unknown algorithm 'x', expected one of: ..."). `target`, for a
 // family that draws an image, replaces the software rasterizer; `display_name`
-// (non-empty) replaces the culler's name(), e.g. "lazy-grid-gl".
+// (non-empty) replaces the culler's name(), e.g. "NAME-gl".
 std::unique_ptr<Culler> makeCuller(std::string_view name, const KnobValues& knobs,
                                    std::string& error, std::unique_ptr<ImageTarget> target = nullptr,
                                    const std::string& display_name = "");

@@ -1,0 +1,106 @@
+// The window offers only what fits the scene (app/debugger.h): its culler list is
+// the registry's algorithms for the scene's dimension, a window asked for one
+// that does not run on the scene refuses naming the dimension, and opening a
+// scene the selected culler does not run on switches to one that does, with a
+// note the scene panel shows. The family's view follows the selected culler.
+// Needs a GL context (the test run provides an X display, under xvfb-run).
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/debugger.h"
+#include "app/gl_api.h"
+#include "app/gl_context.h"
+#include "culling/io/scene_loader.h"
+#include "run_command.h"
+
+namespace gridcull {
+namespace {
+
+Scene load(const char* name) {
+    SceneLoadResult loaded = loadSceneFile(test::sourcePath(std::string("scenes/") + name));
+    EXPECT_TRUE(loaded.scene) << name;
+    return loaded.scene ? std::move(*loaded.scene) : Scene{};
+}
+
+bool offers(const Debugger& debugger, const std::string& name) {
+    const std::vector<std::string>& names = debugger.offeredAlgorithms();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+class DebuggerTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string error;
+        ASSERT_TRUE(window_.create(64, 64, "gridcull test", false, error)) << error;
+        options_.knobs.set("oracle-res", 96);
+        options_.knobs.set("oracle-rays", 2048);
+    }
+    GlWindow window_;
+    ViewOptions options_;
+};
+
+TEST_F(DebuggerTest, OffersOnlyTheAlgorithmsOfTheScenesDimension) {
+    options_.algo = "lazy-grid";
+    Debugger debugger(options_);
+    std::string error;
+    ASSERT_TRUE(debugger.init(load("forest-3d.json"), error)) << error;
+    EXPECT_TRUE(offers(debugger, "lazy-grid"));
+    EXPECT_FALSE(offers(debugger, "rgvc"));
+    ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
+    EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "lazy-grid");
+    debugger.drawScene(computeLayout(640, 360, false), 360);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+    // A 2D scene: the lazy grid does not run there, so the window switches.
+    debugger.openSceneFile(test::sourcePath("scenes/walls-2d.json"));
+    EXPECT_EQ(debugger.session().scene().dimensions, 2);
+    EXPECT_EQ(debugger.session().algo(), "vfc");
+    EXPECT_NE(debugger.note().find("lazy-grid runs on 3D scenes only, and this scene is 2D"),
+              std::string::npos)
+        << debugger.note();
+    EXPECT_NE(debugger.note().find("switched to vfc"), std::string::npos) << debugger.note();
+    EXPECT_TRUE(offers(debugger, "rgvc"));
+    EXPECT_FALSE(offers(debugger, "lazy-grid"));
+
+    // Picking rgvc from the list brings its view and snapshot, and clears the note.
+    UiActions actions;
+    const std::vector<std::string>& names = debugger.offeredAlgorithms();
+    actions.algorithm.select_algo =
+        int(std::find(names.begin(), names.end(), "rgvc") - names.begin());
+    debugger.apply(actions);
+    EXPECT_EQ(debugger.session().algo(), "rgvc");
+    EXPECT_TRUE(debugger.note().empty());
+    ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
+    EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "rgvc");
+    debugger.drawScene(computeLayout(640, 360, false), 360);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(DebuggerTest, RefusesAnAlgorithmThatDoesNotRunOnTheScene) {
+    options_.algo = "lazy-grid";
+    Debugger debugger(options_);
+    std::string error;
+    EXPECT_FALSE(debugger.init(load("walls-2d.json"), error));
+    EXPECT_NE(error.find("lazy-grid runs on 3D scenes only, and this scene is 2D"),
+              std::string::npos)
+        << error;
+}
+
+// The command line refuses the same combinations before any window opens.
+TEST(WindowCommands, RefuseAnAlgorithmOfTheOtherDimensionNamingIt) {
+    const std::string flat = "'" + test::sourcePath("scenes/walls-2d.json") + "'";
+    const std::string deep = "'" + test::sourcePath("scenes/forest-3d.json") + "'";
+    for (const std::string& args :
+         {"shot " + flat + " --frame 0 --algo lazy-grid --out '" + test::scratchDir() + "/n.png'",
+          "view " + flat + " --algo lazy-grid", "cull " + flat + " --algo busy-grid",
+          "bench " + flat + " --algo vfc,lazy-grid-z", "view " + deep + " --algo rgvc"}) {
+        const test::CommandResult r = test::runGridcull(args);
+        EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(" scenes only, and this scene is "), std::string::npos) << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace gridcull
