@@ -13,11 +13,11 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <string>
 #include <type_traits>
-#include <variant>
 #include <vector>
 
 namespace gridcull {
@@ -70,17 +70,17 @@ private:
 template <class Options>
 class KnobTable {
 public:
-    using Member = std::variant<int Options::*, double Options::*>;
+    // A knob and how to read and set the member it stands for.
     struct Entry {
         Knob knob;
-        Member member;
+        std::function<double(const Options&)> get;
+        std::function<void(Options&, double)> set;
     };
 
     KnobTable(std::initializer_list<Entry> entries) : entries_(entries) {
         const Options defaults{};
         for (Entry& e : entries_) {
-            e.knob.default_value = std::visit(
-                [&](auto member) { return double(defaults.*member); }, e.member);
+            e.knob.default_value = e.get(defaults);
             knobs_.push_back(e.knob);
         }
     }
@@ -92,13 +92,7 @@ public:
         Options options{};
         for (const Entry& e : entries_) {
             if (!values.has(e.knob.flag)) continue;
-            const double v = values.get(e.knob);
-            std::visit(
-                [&](auto member) {
-                    using T = std::remove_reference_t<decltype(options.*member)>;
-                    options.*member = std::is_integral_v<T> ? T(std::llround(v)) : T(v);
-                },
-                e.member);
+            e.set(options, values.get(e.knob));
         }
         return options;
     }
@@ -119,7 +113,10 @@ typename KnobTable<Options>::Entry knob(const char* flag, T Options::*member, do
     k.min = min;
     k.max = max;
     k.help = help;
-    return {k, member};
+    return {k, [member](const Options& o) { return double(o.*member); },
+            [member](Options& o, double v) {
+                o.*member = std::is_same_v<T, int> ? T(std::llround(v)) : T(v);
+            }};
 }
 
 // A knob whose unset value (the member's default, outside [min, max]) stands

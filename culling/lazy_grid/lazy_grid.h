@@ -4,10 +4,10 @@
 // update of section 7, and the extensions of section 6.
 //
 // A coarse grid of cells (cell_size x cell_size pixels; the last column and row
-// may be narrower) over a software occlusion buffer (one bit per pixel, culling/
-// occlusion_buffer.h) or a software z-buffer (the oracle's rasterizer, culling/
-// exact_oracle_id_buffer.h), both sampled at pixel centres at the view's
-// resolution. isOccluded() rates a box's screen rectangle occluded or
+// may be narrower) over an occlusion buffer (one bit per pixel) or a z-buffer,
+// read through PixelQueries (culling/api/image_target.h): by default the shared
+// software rasterizer's (culling/raster/), sampled at pixel centres at the
+// view's resolution. isOccluded() rates a box's screen rectangle occluded or
 // potentially visible, reading cell states first and pixels only when the states
 // cannot decide (a "pixel-level query"); cells are updated lazily, only when a
 // test needs them and they are outdated.

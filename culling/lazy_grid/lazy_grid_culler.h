@@ -21,9 +21,10 @@
 //   outdated.
 // The lists are binary heaps (the paper allows heaps; its lists were short).
 //
-// "Drawing" an object rasterizes it into the software z-buffer, which is the
-// exact oracle's ID buffer (culling/raster/id_depth_buffer.h: exact per pixel
-// centre, front-to-back skipping) at the view's resolution, and then sets its
+// "Drawing" an object goes through an ImageTarget (culling/api/image_target.h).
+// The default, SoftwareImageTarget, rasterizes it with the shared rasterizer
+// (culling/raster/id_depth_buffer.h: exact per pixel centre, front-to-back
+// skipping; the oracle's too) at the view's resolution, and then sets its
 // written pixels in the one-bit occlusion buffer for the occlusion-buffer
 // variant. The PVS is the set of objects drawn.
 //
@@ -33,8 +34,8 @@
 //   answer as the window.
 // - A leaf holds one object (the forest's "own bounding box" per primitive); the
 //   city's 1500-triangle leaves do not apply, our buildings are single boxes.
-// - The view's resolution is CullerOptions::lazy_resolution pixels on the long
-//   side (0: the oracle's), the other side from the camera's aspect.
+// - The view's resolution is LazyGridOptions::resolution (--lazy-res) pixels on
+//   the long side (0: the oracle's), the other side from the camera's aspect.
 //
 // Conservative at the resolution it renders: with --lazy-res equal to the
 // oracle's, the PVS contains every object the oracle sees (same pixel centres,

@@ -12,8 +12,10 @@
 //
 // Spheres and boxes are intersected exactly (culling/scene/ray_intersect.h); a ray that
 // starts inside one, or whose near-plane point is inside, meets it at depth near.
-// Meshes are rasterized triangle by triangle: near-plane clipping, a top-left fill
-// rule, perspective-correct depth, no back-face culling. A closed mesh is solid:
+// Meshes are rasterized triangle by triangle: near-plane clipping, a fill rule
+// that gives a pixel centre on an edge shared by two triangles to exactly one
+// of them (the right and bottom edges own theirs, as the image is shown),
+// perspective-correct depth, no back-face culling. A closed mesh is solid:
 // where its triangles enclose the near-plane point (odd crossing count behind it)
 // it is written at depth near, so the cap the near plane cuts off still occludes.
 //
@@ -87,10 +89,10 @@ public:
     // enough for every index drawn. O(pixels).
     void markVisible(std::vector<char>& seen) const;
 
-    // Read access for the lazy occlusion grid (culling/lazy_grid/lazy_grid.h), which uses this
-    // buffer as its software z-buffer: row py's depths (+infinity where nothing was
-    // drawn), and the pixel rectangle that the last draw call returning true may
-    // have written (a call returning false writes nothing and leaves it as it was).
+    // Read access for the clients that use this buffer as a software z-buffer
+    // (SoftwareImageTarget): row py's depths (+infinity where nothing was drawn),
+    // and the pixel rectangle that the last draw call returning true may have
+    // written (a call returning false writes nothing and leaves it as it was).
     const double* depthRow(int py) const { return depth_.data() + size_t(py) * size_t(width_); }
     ScreenRange lastDrawCols() const { return last_cols_; }
     ScreenRange lastDrawRows() const { return last_rows_; }

@@ -1,6 +1,6 @@
-// Triangle meshes in the exact oracle's ID buffer (exact_oracle_id_buffer.h):
-// near-plane clipping, top-left fill rule, perspective-correct depth, and the
-// parity fill that keeps a closed mesh solid where the near plane cuts it.
+// Triangle meshes in the shared ID-and-depth buffer (id_depth_buffer.h):
+// near-plane clipping, an edge-ownership fill rule, perspective-correct depth,
+// and the parity fill that keeps a closed mesh solid where the near plane cuts it.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,10 +20,13 @@ double edgeFunction(double px, double py, double qx, double qy, double rx, doubl
     return (qx - px) * (ry - py) - (qy - py) * (rx - px);
 }
 
-// Top-left rule: a pixel centre exactly on an edge belongs to the triangle only
+// Edge ownership: a pixel centre exactly on an edge belongs to the triangle only
 // when the edge runs this way. An edge and its reverse never both qualify, so of
 // two triangles sharing an edge exactly one owns the centre, which keeps both the
-// ID buffer and the crossing parity free of double counts.
+// ID buffer and the crossing parity free of double counts. With rows counted
+// from the top, this gives a triangle the centres on its right and bottom edges
+// as the image is shown: the top-left rule mirrored, and just as consistent
+// (tests/culling/raster/id_depth_buffer_mesh_test.cpp checks both).
 bool ownsEdge(double dx, double dy) {
     return dy > 0.0 || (dy == 0.0 && dx < 0.0);
 }

@@ -1,10 +1,10 @@
-// The software occlusion buffer of the lazy occlusion grid's occlusion-buffer
-// variant (Hey, Tobler & Purgathofer, section 3: "an occlusion-buffer where a
-// single bit per pixel shows if that pixel is free or occluded"). One bit per
-// pixel, 64 pixels to a word, rows padded to whole words; a set bit is occluded.
+// A software occlusion buffer, "an occlusion-buffer where a single bit per pixel
+// shows if that pixel is free or occluded" (Hey, Tobler & Purgathofer, section
+// 3). One bit per pixel, 64 pixels to a word, rows padded to whole words; a set
+// bit is occluded.
 //
-// It is written from the software z-buffer (the oracle's rasterizer, culling/
-// exact_oracle_id_buffer.h) after each draw: a pixel is occluded once something
+// It is written from the shared rasterizer's z-buffer (culling/raster/
+// id_depth_buffer.h) after each draw: a pixel is occluded once something
 // was drawn at its centre. Queries count free pixels of a rectangle with word
 // masks and popcounts, so a 32 x 32 cell costs 32 word reads.
 #pragma once

@@ -1,10 +1,9 @@
-// Screen space of the lazy occlusion grid (culling/lazy_grid/lazy_grid.h): how a world box
-// maps to the image that the grid covers. Hey, Tobler & Purgathofer, section 7:
-// "The image area of a bounding box is approximated by its bounding rectangle in
-// the image."
+// Screen space of the image-space cullers: how a world box maps to the image
+// they draw (after Hey, Tobler & Purgathofer, section 7: "The image area of a
+// bounding box is approximated by its bounding rectangle in the image").
 //
-// The image is the one the exact oracle's ID buffer samples (culling/
-// exact_oracle_id_buffer.h): width x height pixels over exactly the camera's
+// The image is the one the shared rasterizer samples (culling/raster/
+// id_depth_buffer.h): width x height pixels over exactly the camera's
 // frustum, pixel (px, py) from the top-left, its centre at continuous coordinates
 // (px + 0.5, py + 0.5). Depth is view-space distance along the camera's forward
 // axis in world units, as in the oracle, so "znear <= zfar" compares like with

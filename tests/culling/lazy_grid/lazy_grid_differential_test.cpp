@@ -1,8 +1,7 @@
-// The lazy occlusion grid cullers against the exact oracle (the issue's
-// acceptance: 0 false culls for both variants over at least 500 seeded random
-// scenes x 20 frames). The oracle samples the same image (--lazy-res =
-// --oracle-res), which is what the lazy grid promises to be conservative
-// for (culling/lazy_grid/lazy_grid_culler.h). Every PVS must also be sorted, unique and
+// The lazy occlusion grid cullers against the exact oracle: 0 false culls for
+// both variants over at least 500 seeded random scenes x 20 frames. The oracle
+// samples the same image (--lazy-res = --oracle-res), which is what the lazy
+// grid promises to be conservative for (culling/lazy_grid/lazy_grid_culler.h). Every PVS must also be sorted, unique and
 // within vfc's (the traversal culls by the same frustum test).
 //
 // Accepted over-estimation, written down: the PVS may hold objects hidden from
@@ -17,9 +16,9 @@
 #include <gtest/gtest.h>
 
 #include "culling/api/culler.h"
-#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 #include "tests/common/oracle_test_scenes.h"
 #include "tests/common/test_seeds.h"
+#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 
 namespace gridcull {
 namespace {
@@ -31,8 +30,8 @@ struct Totals {
     long long frames = 0, pvs = 0, exact = 0, vfc = 0, false_culls = 0;
 };
 
-void runScene(const Scene& scene, const KnobValues& options,
-              const std::vector<std::string>& names, std::vector<Totals>& totals) {
+void runScene(const Scene& scene, const KnobValues& options, const std::vector<std::string>& names,
+              std::vector<Totals>& totals) {
     auto oracle = test::makeOrDie("exact", options);
     auto vfc = test::makeOrDie("vfc", options);
     std::vector<std::unique_ptr<Culler>> cullers;

@@ -96,7 +96,9 @@ TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
     report("default run", int(seeds.size()), totals);
     EXPECT_EQ(totals.false_culls, 0);
     // Culling must do something on these scenes: far fewer than all objects.
-    if (!test::singleSeedRun()) EXPECT_LT(totals.pvs, totals.objects);
+    if (!test::singleSeedRun()) {
+        EXPECT_LT(totals.pvs, totals.objects);
+    }
 }
 
 TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
