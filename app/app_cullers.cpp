@@ -24,8 +24,7 @@ bool ensureGlContext(std::string& error) {
 
 // The registry algorithm of a -gl name, or "".
 std::string glBaseOf(std::string_view name) {
-    if (name.size() <= kGlSuffix.size() ||
-        name.substr(name.size() - kGlSuffix.size()) != kGlSuffix)
+    if (name.size() <= kGlSuffix.size() || name.substr(name.size() - kGlSuffix.size()) != kGlSuffix)
         return "";
     const std::string base(name.substr(0, name.size() - kGlSuffix.size()));
     const FamilyEntry* family = familyOfAlgorithm(base);

@@ -22,8 +22,9 @@ int dispatch(int argc, char** argv) {
     CLI::App app{kDescription, "gridcull"};
     app.formatter(helpFormatter());
     app.require_subcommand(0, 1);
-    app.footer("gridcull CMD --help: help for one command.\n"
-               "exit status: 0 done, 2 bad command line, 3 scene rejected, 1 anything else.");
+    app.footer(
+        "gridcull CMD --help: help for one command.\n"
+        "exit status: 0 done, 2 bad command line, 3 scene rejected, 1 anything else.");
     bool version = false;
     app.add_flag("--version", version, "print the version and exit");
     CullCommand cull;
@@ -137,7 +138,8 @@ bool parseAlgoVariants(const std::string& list, const KnobValues& base,
 std::string describeKnobs(const KnobValues& knobs) {
     std::string line;
     for (const Knob* knob : allKnobs())
-        line += (line.empty() ? "" : " ") + knob->flag + "=" + knobValueText(*knob, knobs.get(*knob));
+        line +=
+            (line.empty() ? "" : " ") + knob->flag + "=" + knobValueText(*knob, knobs.get(*knob));
     return line;
 }
 

@@ -80,8 +80,8 @@ void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
             hovered_index_ = pickObject2d(scene, session_.t(), pointer.origin, session_.states());
         } else {
             double distance = 0.0;
-            const int id = pickObject(scene, session_.t(), pointer.origin, pointer.direction,
-                                      &distance);
+            const int id =
+                pickObject(scene, session_.t(), pointer.origin, pointer.direction, &distance);
             if (id >= 0) {
                 hovered_index_ = scene.indexOf(id);
                 hovered_distance_ = distance;

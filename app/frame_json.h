@@ -5,13 +5,13 @@
 #pragma once
 #include <string>
 
-#include "culling/scene/camera.h"
 #include "culling/api/culler.h"
+#include "culling/scene/camera.h"
 
 namespace gridcull {
 
 // Appends the line (with its '\n') to `line`; reuses the string's capacity.
-void appendFrameJson(std::string& line, int frame, double t, const char* algo,
-                     const Camera& camera, const FrameResult& result);
+void appendFrameJson(std::string& line, int frame, double t, const char* algo, const Camera& camera,
+                     const FrameResult& result);
 
 }  // namespace gridcull

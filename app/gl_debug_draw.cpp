@@ -44,7 +44,8 @@ void GlDebugDraw::appendLabel(const DebugDrawBatch::Label& label, const glm::vec
             GlyphVertex v[4];
             std::memcpy(v, glyphs_.data() + size_t(q) * sizeof v, sizeof v);
             glm::vec3 p[4];
-            for (int k = 0; k < 4; ++k) p[k] = glm::vec3(origin + s * glm::vec2(v[k].x, v[k].y), 0.0f);
+            for (int k = 0; k < 4; ++k)
+                p[k] = glm::vec3(origin + s * glm::vec2(v[k].x, v[k].y), 0.0f);
             for (int k : {0, 1, 2, 0, 2, 3}) text_.push_back({p[k], *paint});
         }
     }

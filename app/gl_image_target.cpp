@@ -28,7 +28,7 @@ constexpr int kSphereSlices = 32, kSphereStacks = 16;  // object_triangles.h's c
 }  // namespace
 
 GlImageTarget::Mesh GlImageTarget::upload(const std::vector<float>& positions,
-                                                const std::vector<uint32_t>& indices) {
+                                          const std::vector<uint32_t>& indices) {
     Mesh mesh;
     mesh.vao = makeGlVertexArray();
     mesh.vertices = makeGlBuffer();
@@ -113,7 +113,7 @@ void GlImageTarget::drawMesh(const Mesh& mesh, const glm::mat4& model) {
 }
 
 bool GlImageTarget::draw(const SceneObject& object, int, const glm::dvec3& shift,
-                            const PixelRect& image_area, PixelRect& written) {
+                         const PixelRect& image_area, PixelRect& written) {
     switch (object.shape) {
         case ShapeKind::Sphere: {
             const glm::dvec3 c = object.center + shift;

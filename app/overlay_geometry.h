@@ -20,7 +20,9 @@ namespace gridcull {
 // share one renderer.
 using ColorVertex = DebugDrawBatch::Vertex;
 
-inline glm::vec4 toRgba(Rgb c, float alpha = 1.0f) { return {c.r, c.g, c.b, alpha}; }
+inline glm::vec4 toRgba(Rgb c, float alpha = 1.0f) {
+    return {c.r, c.g, c.b, alpha};
+}
 
 // Two vertices per segment (GL_LINES).
 void appendSegment(std::vector<ColorVertex>& lines, const glm::dvec3& a, const glm::dvec3& b,
@@ -28,8 +30,8 @@ void appendSegment(std::vector<ColorVertex>& lines, const glm::dvec3& a, const g
 // The 12 edges of a box; in 2D (min.z == max.z) its 4 sides.
 void appendBoxEdges(std::vector<ColorVertex>& lines, const Aabb& box, const glm::vec4& color);
 // The outline of a 2D object at time t: circle, box or polygon.
-void appendOutline2d(std::vector<ColorVertex>& lines, const Scene& scene,
-                     const SceneObject& object, double t, const glm::vec4& color);
+void appendOutline2d(std::vector<ColorVertex>& lines, const Scene& scene, const SceneObject& object,
+                     double t, const glm::vec4& color);
 // The lines of a 2D grid's voxel boundaries.
 void appendGridLines2d(std::vector<ColorVertex>& lines, const RegularGrid& grid,
                        const glm::vec4& color);

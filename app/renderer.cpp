@@ -68,10 +68,14 @@ const glm::vec4 kBackground(0.10f, 0.11f, 0.13f, 1.0f);
 // 2D depth layer: higher states are drawn over lower ones.
 float layerDepth(ObjectState state) {
     switch (state) {
-    case ObjectState::Culled: return 0.1f;
-    case ObjectState::Hidden: return 0.2f;
-    case ObjectState::Visible: return 0.3f;
-    case ObjectState::FalseCulled: return 0.4f;
+        case ObjectState::Culled:
+            return 0.1f;
+        case ObjectState::Hidden:
+            return 0.2f;
+        case ObjectState::Visible:
+            return 0.3f;
+        case ObjectState::FalseCulled:
+            return 0.4f;
     }
     return 0.1f;
 }
@@ -168,23 +172,27 @@ void Renderer::setScene(const Scene& scene) {
         const SceneObject& object = scene.objects[i];
         size_t group = 0;
         switch (object.shape) {
-        case ShapeKind::Sphere: group = round_group; break;
-        case ShapeKind::Box: group = box_group; break;
-        case ShapeKind::Mesh: {
-            const auto found = mesh_groups.find(object.mesh.get());
-            if (found != mesh_groups.end()) {
-                group = found->second;
-            } else {
-                group = range([&] { appendMesh(*object.mesh, soup); }, false);
-                mesh_groups.emplace(object.mesh.get(), group);
+            case ShapeKind::Sphere:
+                group = round_group;
+                break;
+            case ShapeKind::Box:
+                group = box_group;
+                break;
+            case ShapeKind::Mesh: {
+                const auto found = mesh_groups.find(object.mesh.get());
+                if (found != mesh_groups.end()) {
+                    group = found->second;
+                } else {
+                    group = range([&] { appendMesh(*object.mesh, soup); }, false);
+                    mesh_groups.emplace(object.mesh.get(), group);
+                }
+                break;
             }
-            break;
-        }
-        case ShapeKind::Polygon:
-            // The loader only accepts simple polygons (culling/scene/polygon2d.h), for
-            // which ear clipping always completes.
-            group = range([&] { appendPolygon(object, soup); }, false);
-            break;
+            case ShapeKind::Polygon:
+                // The loader only accepts simple polygons (culling/scene/polygon2d.h), for
+                // which ear clipping always completes.
+                group = range([&] { appendPolygon(object, soup); }, false);
+                break;
         }
         groups_[group].objects.push_back(int(i));
     }
@@ -205,22 +213,22 @@ Renderer::Instance Renderer::makeInstance(const SceneDrawInput& input, int index
     Instance instance;
     instance.color = toRgba(objectStateColor(state));
     switch (object.shape) {
-    case ShapeKind::Sphere:
-        instance.offset = glm::vec3(object.center + d);
-        instance.scale = glm::vec3(float(object.radius));
-        break;
-    case ShapeKind::Box:
-        instance.offset = glm::vec3(object.box.center() + d);
-        instance.scale = glm::vec3(object.box.extent());
-        break;
-    case ShapeKind::Mesh:
-        instance.offset = glm::vec3(object.center + d);
-        instance.scale = glm::vec3(1.0f);
-        break;
-    case ShapeKind::Polygon:
-        instance.offset = glm::vec3(object.anchor + d);
-        instance.scale = glm::vec3(1.0f);
-        break;
+        case ShapeKind::Sphere:
+            instance.offset = glm::vec3(object.center + d);
+            instance.scale = glm::vec3(float(object.radius));
+            break;
+        case ShapeKind::Box:
+            instance.offset = glm::vec3(object.box.center() + d);
+            instance.scale = glm::vec3(object.box.extent());
+            break;
+        case ShapeKind::Mesh:
+            instance.offset = glm::vec3(object.center + d);
+            instance.scale = glm::vec3(1.0f);
+            break;
+        case ShapeKind::Polygon:
+            instance.offset = glm::vec3(object.anchor + d);
+            instance.scale = glm::vec3(1.0f);
+            break;
     }
     if (dimensions_ == 2) {
         instance.offset.z = layerDepth(state);
@@ -248,7 +256,8 @@ void Renderer::buildSphereInstances(const SceneDrawInput& input, DrawGroup& grou
     }
     size_t cursor[kSphereLods];
     cursor[0] = instances_.size();
-    for (int lod = 1; lod < kSphereLods; ++lod) cursor[lod] = cursor[lod - 1] + group.lod_count[lod - 1];
+    for (int lod = 1; lod < kSphereLods; ++lod)
+        cursor[lod] = cursor[lod - 1] + group.lod_count[lod - 1];
     instances_.resize(instances_.size() + group.objects.size());
     for (size_t k = 0; k < group.objects.size(); ++k)
         instances_[cursor[sphere_lod_[k]]++] = makeInstance(input, group.objects[k]);
@@ -292,7 +301,10 @@ void Renderer::drawObjects(const SceneDrawInput& input) {
     for (const DrawGroup& group : groups_) {
         const GLsizei count = GLsizei(group.objects.size());
         if (count == 0) continue;
-        if (group.cull_back_faces) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+        if (group.cull_back_faces)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
         if (group.sphere) {
             glBindVertexArray(sphere_vao_.get());
             size_t first = group.instance_first;

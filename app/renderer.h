@@ -40,9 +40,9 @@ struct SceneDrawInput {
     Camera culling_camera;
     bool show_culling_camera = true;  // off when looking through it
     ViewMatrices view;
-    WindowRect viewport;              // framebuffer pixels, origin top left
-    int framebuffer_height = 0;       // to flip the viewport into GL's bottom-left origin
-    int hovered_index = -1;           // outlined when >= 0
+    WindowRect viewport;                  // framebuffer pixels, origin top left
+    int framebuffer_height = 0;           // to flip the viewport into GL's bottom-left origin
+    int hovered_index = -1;               // outlined when >= 0
     bool through_culling_camera = false;  // 3D, the view is the culling camera's
     // The selected family's view, which draws its overlay (null: none), and the
     // frame as it sees it.
@@ -73,11 +73,11 @@ private:
         GLsizei index_count = 0;
     };
     struct DrawGroup {
-        bool sphere = false;      // the indexed unit spheres; else a soup range
-        GLint first = 0;          // soup: first vertex
-        GLsizei count = 0;        // soup: vertex count
+        bool sphere = false;  // the indexed unit spheres; else a soup range
+        GLint first = 0;      // soup: first vertex
+        GLsizei count = 0;    // soup: vertex count
         bool cull_back_faces = false;
-        std::vector<int> objects; // indices into scene.objects
+        std::vector<int> objects;  // indices into scene.objects
         size_t instance_first = 0;
         size_t lod_count[kSphereLods] = {};  // sphere: instances per level, in order
     };

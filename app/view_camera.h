@@ -16,7 +16,7 @@ struct ViewMatrices {
     glm::dmat4 view{1.0};
     glm::dmat4 projection{1.0};
     glm::dmat4 view_projection{1.0};
-    glm::dvec3 eye{0.0};         // perspective: the eye; orthographic: unused
+    glm::dvec3 eye{0.0};  // perspective: the eye; orthographic: unused
     glm::dvec3 forward{0.0, 0.0, -1.0};
     bool orthographic = false;
 };
@@ -44,12 +44,12 @@ private:
     glm::dvec3 orbitEye() const;
 
     int dimensions_ = 3;
-    double world_size_ = 1.0;      // diagonal of the world box
+    double world_size_ = 1.0;  // diagonal of the world box
     // Orbit.
     glm::dvec3 orbit_target_{0.0};
     double orbit_distance_ = 1.0;
-    double orbit_yaw_ = 0.0;       // radians around +y
-    double orbit_pitch_ = 0.5;     // radians above the horizon
+    double orbit_yaw_ = 0.0;    // radians around +y
+    double orbit_pitch_ = 0.5;  // radians above the horizon
     // Fly.
     glm::dvec3 fly_position_{0.0};
     double fly_yaw_ = 0.0;

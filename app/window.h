@@ -10,8 +10,8 @@
 namespace gridcull {
 
 struct ViewOptions {
-    std::string algo = "vfc";   // the culler whose PVS colours the objects
-    int width = 1280;           // window / image size in pixels
+    std::string algo = "vfc";  // the culler whose PVS colours the objects
+    int width = 1280;          // window / image size in pixels
     int height = 720;
     int frame = 0;              // first frame shown (shot: the frame drawn)
     std::string view = "main";  // shot: which view to draw, see viewNames()

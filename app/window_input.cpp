@@ -41,7 +41,8 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) debugger.toggleFreeze();
     if (dimensions3 && debugger.viewMode() == ViewMode::Fly) {
         auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0 : 0.0; };
-        const glm::dvec3 move(down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+        const glm::dvec3 move(down(GLFW_KEY_D) - down(GLFW_KEY_A),
+                              down(GLFW_KEY_E) - down(GLFW_KEY_Q),
                               down(GLFW_KEY_W) - down(GLFW_KEY_S));
         const bool fast = down(GLFW_KEY_LEFT_SHIFT) > 0.0 || down(GLFW_KEY_RIGHT_SHIFT) > 0.0;
         if (move != glm::dvec3(0.0)) camera.fly(move, io.DeltaTime, fast);

@@ -30,14 +30,13 @@ void dashes(DebugDraw& draw, DrawSpace space, double x0, double y0, double x1, d
 
 }  // namespace
 
-void DebugDraw::quad(DrawSpace space, const glm::dvec3& a, const glm::dvec3& b,
-                     const glm::dvec3& c, const glm::dvec3& d, Paint paint) {
+void DebugDraw::quad(DrawSpace space, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                     const glm::dvec3& d, Paint paint) {
     triangle(space, a, b, c, paint);
     triangle(space, a, c, d, paint);
 }
 
-void DebugDraw::fillRect(DrawSpace space, double x0, double y0, double x1, double y1,
-                         Paint paint) {
+void DebugDraw::fillRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint) {
     quad(space, at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1), paint);
 }
 
@@ -49,16 +48,16 @@ void DebugDraw::outlineRect(DrawSpace space, double x0, double y0, double x1, do
     line(space, at(x0, y1), at(x0, y0), paint, width);
 }
 
-void DebugDraw::dashedRect(DrawSpace space, double x0, double y0, double x1, double y1,
-                           Paint paint, float width, double dash, double gap) {
+void DebugDraw::dashedRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint,
+                           float width, double dash, double gap) {
     dashes(*this, space, x0, y0, x1, y0, paint, width, dash, gap);
     dashes(*this, space, x1, y0, x1, y1, paint, width, dash, gap);
     dashes(*this, space, x1, y1, x0, y1, paint, width, dash, gap);
     dashes(*this, space, x0, y1, x0, y0, paint, width, dash, gap);
 }
 
-void DebugDraw::hatchRect(DrawSpace space, double x0, double y0, double x1, double y1,
-                          Paint paint, float width, double spacing) {
+void DebugDraw::hatchRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint,
+                          float width, double spacing) {
     const double w = x1 - x0, h = y1 - y0;
     if (spacing <= 0.0) return;
     for (double d = spacing; d < w + h; d += spacing) {
@@ -70,7 +69,8 @@ void DebugDraw::hatchRect(DrawSpace space, double x0, double y0, double x1, doub
 
 void DebugDraw::fillConvexPolygon(DrawSpace space, const glm::dvec3* points, size_t count,
                                   Paint paint) {
-    for (size_t k = 1; k + 1 < count; ++k) triangle(space, points[0], points[k], points[k + 1], paint);
+    for (size_t k = 1; k + 1 < count; ++k)
+        triangle(space, points[0], points[k], points[k + 1], paint);
 }
 
 void DebugDraw::polyline(DrawSpace space, const glm::dvec3* points, size_t count, Paint paint,
@@ -78,8 +78,8 @@ void DebugDraw::polyline(DrawSpace space, const glm::dvec3* points, size_t count
     for (size_t k = 0; k + 1 < count; ++k) line(space, points[k], points[k + 1], paint, width);
 }
 
-void DebugDraw::outlinePolygon(DrawSpace space, const glm::dvec3* points, size_t count,
-                               Paint paint, float width) {
+void DebugDraw::outlinePolygon(DrawSpace space, const glm::dvec3* points, size_t count, Paint paint,
+                               float width) {
     polyline(space, points, count, paint, width);
     if (count > 2) line(space, points[count - 1], points[0], paint, width);
 }

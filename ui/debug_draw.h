@@ -54,7 +54,9 @@ public:
     void quad(DrawSpace space, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
               const glm::dvec3& d, Paint paint);  // as triangles (a, b, c) and (a, c, d)
     void fillRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint);
-    void fillRect(const ViewRect& r, Paint paint) { fillRect(DrawSpace::View, r.x0, r.y0, r.x1, r.y1, paint); }
+    void fillRect(const ViewRect& r, Paint paint) {
+        fillRect(DrawSpace::View, r.x0, r.y0, r.x1, r.y1, paint);
+    }
     // Sides in the order bottom, right, top, left from (x0, y0).
     void outlineRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint,
                      float width);

@@ -70,13 +70,15 @@ public:
     // The selected culler's internal state at the current frame (its debug
     // capture is on), or null for a culler with nothing to show. Valid until the
     // next frame is culled.
-    const DebugSnapshot* debugSnapshot() const { return culler_ ? culler_->debugSnapshot() : nullptr; }
+    const DebugSnapshot* debugSnapshot() const {
+        return culler_ ? culler_->debugSnapshot() : nullptr;
+    }
 
 private:
     // Makes the cullers for algo and options and re-runs up to the current frame;
     // on failure keeps the current ones.
     bool replaceCullers(const std::string& algo, const KnobValues& knobs, std::string& error);
-    void restart();          // reset both cullers, run frame 0
+    void restart();  // reset both cullers, run frame 0
     void runFrame(int frame);
     Camera cameraOfFrame(int frame) const;
 
@@ -88,7 +90,7 @@ private:
     std::unique_ptr<Culler> culler_;
     std::unique_ptr<Culler> exact_;  // null when the selected culler is the oracle
     int frame_ = 0;
-    int frozen_from_ = -1;           // first frame culled from frozen_camera_, or -1
+    int frozen_from_ = -1;  // first frame culled from frozen_camera_, or -1
     Camera frozen_camera_;
     Camera culling_camera_;
     FrameResult result_;

@@ -35,11 +35,11 @@ struct FamilyViewContext {
     const Scene* scene = nullptr;
     int frame = 0;
     double t = 0.0;
-    const char* algo = "";                   // the selected algorithm's name
+    const char* algo = "";                    // the selected algorithm's name
     const DebugSnapshot* snapshot = nullptr;  // the culler's last frame; null when none
     const KnobValues* knobs = nullptr;        // the culler's knob values
     ViewMode view_mode = ViewMode::Overview;
-    int hovered_object = -1;                 // index into scene->objects, -1: none
+    int hovered_object = -1;  // index into scene->objects, -1: none
 };
 
 // The pointer over the scene view this frame.

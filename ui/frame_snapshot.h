@@ -19,8 +19,8 @@ struct FrameHistory {
     std::vector<float> pvs_size;
     std::vector<float> exact_visible;
     std::vector<float> false_culls;
-    std::vector<float> cull_ms;   // the selected culler's, wall clock
-    std::vector<float> draw_ms;   // 0 for frames that were never drawn
+    std::vector<float> cull_ms;  // the selected culler's, wall clock
+    std::vector<float> draw_ms;  // 0 for frames that were never drawn
 
     // Sizes every series to `frames` slots of 0 (allocates only when it grows).
     void resize(int frames);
@@ -31,10 +31,10 @@ struct HoverInfo {
     int id = -1;  // -1: nothing under the mouse
     ShapeKind shape = ShapeKind::Sphere;
     ObjectState state = ObjectState::Culled;
-    Aabb bounds;                 // world bounds at the current t
+    Aabb bounds;  // world bounds at the current t
     MotionKind motion = MotionKind::Static;
     double max_speed = 0.0;
-    double distance = 0.0;       // 3D: along the mouse ray; 2D: 0
+    double distance = 0.0;  // 3D: along the mouse ray; 2D: 0
 };
 
 struct FrameSnapshot {
@@ -46,20 +46,20 @@ struct FrameSnapshot {
     // The algorithms the window offers for this scene (those of the registry that
     // run on its dimension), and the selected one.
     const std::vector<std::string>* algo_names = nullptr;
-    int algo_index = 0;  // into algo_names
-    const FrameResult* result = nullptr;  // the selected culler at `frame`
-    const FrameResult* exact = nullptr;   // the oracle at `frame`
+    int algo_index = 0;                              // into algo_names
+    const FrameResult* result = nullptr;             // the selected culler at `frame`
+    const FrameResult* exact = nullptr;              // the oracle at `frame`
     const std::vector<int>* false_culled = nullptr;  // ids, ascending
     const FrameHistory* history = nullptr;
 
     HoverInfo hover;
-    double draw_ms = 0.0;       // CPU time of the last scene draw, up to glFinish
-    bool show_timings = true;   // false in shots: times differ from run to run
+    double draw_ms = 0.0;      // CPU time of the last scene draw, up to glFinish
+    bool show_timings = true;  // false in shots: times differ from run to run
 
     ViewMode view_mode = ViewMode::Overview;
     bool culling_camera_frozen = false;
 
-    const std::string* scene_file = nullptr;                // "" for the built-in scene
+    const std::string* scene_file = nullptr;                 // "" for the built-in scene
     const std::vector<std::string>* scene_errors = nullptr;  // of the last failed open
     // What the window did on its own that the user should know, e.g. that opening
     // a 2D scene switched the culler from a 3D-only one ("" for nothing).

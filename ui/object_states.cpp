@@ -4,9 +4,8 @@
 
 namespace gridcull {
 
-void classifyObjects(const Scene& scene, const std::vector<int>& pvs,
-                     const std::vector<int>& exact, std::vector<ObjectState>& states,
-                     std::vector<int>& false_culled) {
+void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const std::vector<int>& exact,
+                     std::vector<ObjectState>& states, std::vector<int>& false_culled) {
     states.assign(scene.objects.size(), ObjectState::Culled);
     for (int id : pvs) {
         const int index = scene.indexOf(id);

@@ -12,8 +12,7 @@ namespace gridcull {
 // in `exact` but not in `pvs`). Ids in either list that the scene does not have
 // are ignored. Both outputs are resized and reuse their capacity. O(n) with the
 // scene's id index.
-void classifyObjects(const Scene& scene, const std::vector<int>& pvs,
-                     const std::vector<int>& exact, std::vector<ObjectState>& states,
-                     std::vector<int>& false_culled);
+void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const std::vector<int>& exact,
+                     std::vector<ObjectState>& states, std::vector<int>& false_culled);
 
 }  // namespace gridcull

@@ -14,18 +14,18 @@ struct Rgb {
 };
 
 enum class Swatch : uint8_t {
-    Blue,           // Okabe-Ito blue: visible objects
-    SkyBlue,        // hidden objects (in the PVS, not seen); picked things
-    Vermillion,     // false culls, and nothing else in the scene view
-    Yellow,         // the culling camera
+    Blue,        // Okabe-Ito blue: visible objects
+    SkyBlue,     // hidden objects (in the PVS, not seen); picked things
+    Vermillion,  // false culls, and nothing else in the scene view
+    Yellow,      // the culling camera
     Orange,
     BluishGreen,
     ReddishPurple,
-    NearBlack,      // opaque things (an occluder matrix)
-    LightGrey,      // veils (occluded regions)
-    Grey,           // states not yet known (outdated cells)
-    LineGrey,       // grid lines
-    DimGrey,        // culled objects, which recede
+    NearBlack,  // opaque things (an occluder matrix)
+    LightGrey,  // veils (occluded regions)
+    Grey,       // states not yet known (outdated cells)
+    LineGrey,   // grid lines
+    DimGrey,    // culled objects, which recede
     White,
     Count
 };

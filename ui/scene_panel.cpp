@@ -13,7 +13,8 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
     const std::string& file = *snapshot.scene_file;
     // The file's name only: a full path would make shots depend on where the
     // source tree is. The full path is in the tooltip.
-    const std::string shown = file.empty() ? "built in" : std::filesystem::path(file).filename().string();
+    const std::string shown =
+        file.empty() ? "built in" : std::filesystem::path(file).filename().string();
     ImGui::Text("%s (%s)", scene.name.c_str(), shown.c_str());
     if (!file.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", file.c_str());
     const glm::ivec3 r = scene.grid.resolution;
@@ -24,9 +25,9 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
     ImGui::Text("%d frames, dt %.3f s", scene.frames, scene.dt);
 
     ImGui::SetNextItemWidth(-60);
-    const bool entered = ImGui::InputTextWithHint("##path", "path/to/scene.json", state.path,
-                                                  sizeof state.path,
-                                                  ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered =
+        ImGui::InputTextWithHint("##path", "path/to/scene.json", state.path, sizeof state.path,
+                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if ((ImGui::Button("Open") || entered) && state.path[0] != '\0') {
         action.open = true;

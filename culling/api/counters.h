@@ -48,8 +48,12 @@ struct CounterInfo {
 // Every counter, in Counter order (a static_assert in counters.cpp keeps it so).
 extern const std::array<CounterInfo, kCounterCount> kCounters;
 
-inline const char* counterName(Counter counter) { return kCounters[size_t(counter)].name; }
-inline const char* counterMeaning(Counter counter) { return kCounters[size_t(counter)].meaning; }
+inline const char* counterName(Counter counter) {
+    return kCounters[size_t(counter)].name;
+}
+inline const char* counterMeaning(Counter counter) {
+    return kCounters[size_t(counter)].meaning;
+}
 
 struct CullStats {
     double cull_ms = 0.0;

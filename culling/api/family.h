@@ -41,7 +41,7 @@ struct FamilyEntry {
     std::string id;     // e.g. "baseline"; the ui registry's key for its panel and overlay
     std::string title;  // e.g. "Baselines": how help and the window name the family
     std::vector<AlgorithmEntry> algorithms;
-    std::vector<Knob> knobs;  // its options (its KnobTable's knobs())
+    std::vector<Knob> knobs;   // its options (its KnobTable's knobs())
     bool draws_image = false;  // its cullers take a CullerRequest::target
     // Makes the culler of request.algorithm. Never fails for its own algorithms.
     std::function<std::unique_ptr<Culler>(CullerRequest& request)> make;

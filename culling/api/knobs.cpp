@@ -42,13 +42,11 @@ bool parseKnobValue(const Knob& knob, const std::string& text, double& value, st
         } else {
             v = std::strtod(text.c_str(), &end);
         }
-        ok = *end == '\0' && errno != ERANGE && std::isfinite(v) && v >= knob.min &&
-             v <= knob.max;
+        ok = *end == '\0' && errno != ERANGE && std::isfinite(v) && v >= knob.min && v <= knob.max;
     }
     if (!ok) {
-        error = "option --" + knob.flag + ": expected " +
-                (integer ? "an integer " : "a number ") + knobRangeText(knob) + ", got '" +
-                text + "'";
+        error = "option --" + knob.flag + ": expected " + (integer ? "an integer " : "a number ") +
+                knobRangeText(knob) + ", got '" + text + "'";
         return false;
     }
     value = v;

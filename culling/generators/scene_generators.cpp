@@ -93,7 +93,8 @@ void generateCity(const CityParams& p, SeededRandom& rng, Emitter& out) {
         for (int64_t i = 0; i < p.blocks_x; ++i) {
             const double x = x0 + double(i) * pitch, z = z0 + double(j) * pitch;
             const double height = rng.uniform(p.height_min, p.height_max);
-            out.add(makeBox({{x, ground, z}, {x + p.block_size, ground + height, z + p.block_size}}));
+            out.add(
+                makeBox({{x, ground, z}, {x + p.block_size, ground + height, z + p.block_size}}));
         }
     }
 }

@@ -61,10 +61,14 @@ glm::dvec2 onLoop(const glm::dvec2& centre, double half, double u) {
     const int k = std::min(3, int(w / side));
     const double f = w - double(k) * side;
     switch (k) {
-    case 0: return centre + glm::dvec2(-half + f, -half);
-    case 1: return centre + glm::dvec2(half, -half + f);
-    case 2: return centre + glm::dvec2(half - f, half);
-    default: return centre + glm::dvec2(-half, half - f);
+        case 0:
+            return centre + glm::dvec2(-half + f, -half);
+        case 1:
+            return centre + glm::dvec2(half, -half + f);
+        case 2:
+            return centre + glm::dvec2(half - f, half);
+        default:
+            return centre + glm::dvec2(-half, half - f);
     }
 }
 
@@ -91,8 +95,10 @@ void generateRooms(const RoomsParams& p, SeededRandom& rng, Scene& scene, int& n
             const double start = b0 + double(j) * s - t * 0.5, end = start + s + t;
             const double mid = b0 + (double(j) + 0.5) * s;
             if (inner) {
-                out.addBox(plan.box(at - t * 0.5, at + t * 0.5, start, mid - door * 0.5, wall_height));
-                out.addBox(plan.box(at - t * 0.5, at + t * 0.5, mid + door * 0.5, end, wall_height));
+                out.addBox(
+                    plan.box(at - t * 0.5, at + t * 0.5, start, mid - door * 0.5, wall_height));
+                out.addBox(
+                    plan.box(at - t * 0.5, at + t * 0.5, mid + door * 0.5, end, wall_height));
             } else {
                 out.addBox(plan.box(at - t * 0.5, at + t * 0.5, start, end, wall_height));
             }
@@ -105,8 +111,10 @@ void generateRooms(const RoomsParams& p, SeededRandom& rng, Scene& scene, int& n
             const double start = a0 + double(i) * s - t * 0.5, end = start + s + t;
             const double mid = a0 + (double(i) + 0.5) * s;
             if (inner) {
-                out.addBox(plan.box(start, mid - door * 0.5, at - t * 0.5, at + t * 0.5, wall_height));
-                out.addBox(plan.box(mid + door * 0.5, end, at - t * 0.5, at + t * 0.5, wall_height));
+                out.addBox(
+                    plan.box(start, mid - door * 0.5, at - t * 0.5, at + t * 0.5, wall_height));
+                out.addBox(
+                    plan.box(mid + door * 0.5, end, at - t * 0.5, at + t * 0.5, wall_height));
             } else {
                 out.addBox(plan.box(start, end, at - t * 0.5, at + t * 0.5, wall_height));
             }
@@ -124,8 +132,8 @@ void generateRooms(const RoomsParams& p, SeededRandom& rng, Scene& scene, int& n
     for (int64_t j = 0; j < p.rooms_z; ++j) {
         for (int64_t i = 0; i < p.rooms_x; ++i) {
             const glm::dvec2 centre{a0 + (double(i) + 0.5) * s, b0 + (double(j) + 0.5) * s};
-            out.addBox(plan.box(centre.x - table_half, centre.x + table_half,
-                                centre.y - table_half, centre.y + table_half, 0.075 * s));
+            out.addBox(plan.box(centre.x - table_half, centre.x + table_half, centre.y - table_half,
+                                centre.y + table_half, 0.075 * s));
             for (int64_t k = 0; k < p.chairs_per_room; ++k) {
                 const double u0 = rng.uniform(0.0, 8.0 * loop_half);
                 const double direction = rng.uniform() < 0.5 ? -1.0 : 1.0;
@@ -138,7 +146,8 @@ void generateRooms(const RoomsParams& p, SeededRandom& rng, Scene& scene, int& n
                     // Keys at the start and at every corner the chair passes, until
                     // the scene ends or the key budget is spent.
                     chair.motion.kind = MotionKind::Keyframes;
-                    const double anchor_height = plan.is_3d ? plan.ground + 0.5 * chair_height : 0.0;
+                    const double anchor_height =
+                        plan.is_3d ? plan.ground + 0.5 * chair_height : 0.0;
                     auto key = [&](double time, double u) {
                         const glm::dvec2 q = onLoop(centre, loop_half, u);
                         PositionKey pk;

@@ -9,7 +9,9 @@
 
 namespace gridcull {
 
-const char* defaultSceneJson() { return kDefaultSceneJson; }
+const char* defaultSceneJson() {
+    return kDefaultSceneJson;
+}
 
 Scene defaultScene() {
     // Loaded once: the file is fixed at build time, so every load gives the same scene.

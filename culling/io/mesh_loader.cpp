@@ -7,8 +7,8 @@
 #include <sstream>
 #include <utility>
 
-#include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
+#include <glm/geometric.hpp>
 
 namespace gridcull {
 
@@ -85,10 +85,11 @@ MeshLoadResult buildMesh(const tinyobj::ObjReader& reader, const std::string& di
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const size_t vertex_count = attrib.vertices.size() / 3;
     size_t corner_count = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) corner_count += shape.mesh.indices.size();
+    for (const tinyobj::shape_t& shape : reader.GetShapes())
+        corner_count += shape.mesh.indices.size();
     if (corner_count / 3 > kMaxMeshTriangles) {
-        result.error = "has " + std::to_string(corner_count / 3) + " triangles, more than the limit of " +
-                       std::to_string(kMaxMeshTriangles);
+        result.error = "has " + std::to_string(corner_count / 3) +
+                       " triangles, more than the limit of " + std::to_string(kMaxMeshTriangles);
         return result;
     }
     auto mesh = std::make_shared<TriangleMesh>();
@@ -103,7 +104,8 @@ MeshLoadResult buildMesh(const tinyobj::ObjReader& reader, const std::string& di
             return result;
         }
         const glm::dvec3 s = p * scale;
-        mesh->vertices[i] = {glm::dot(rot.row[0], s), glm::dot(rot.row[1], s), glm::dot(rot.row[2], s)};
+        mesh->vertices[i] = {glm::dot(rot.row[0], s), glm::dot(rot.row[1], s),
+                             glm::dot(rot.row[2], s)};
     }
     mesh->indices.reserve(corner_count);
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {

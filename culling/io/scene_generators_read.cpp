@@ -34,16 +34,16 @@ bool readRegion(JsonObjectReader& g, SceneLoadContext& c, Aabb& region) {
 }
 
 bool readCount(JsonObjectReader& g, int64_t limit, int64_t& count) {
-    return g.integer("count", true, 0, limit,
-                     "an integer in [0, " + std::to_string(limit) + "]", count);
+    return g.integer("count", true, 0, limit, "an integer in [0, " + std::to_string(limit) + "]",
+                     count);
 }
 
 bool readSphereCluster(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
     SphereClusterParams p;
     p.region = c.scene.grid.world;
-    bool good = g.checkKeys({"type", "count", "radius", "dynamic_fraction", "max_speed", "region",
-                             "motion"},
-                            "for generator 'sphere_cluster'");
+    bool good = g.checkKeys(
+        {"type", "count", "radius", "dynamic_fraction", "max_speed", "region", "motion"},
+        "for generator 'sphere_cluster'");
     good = readCount(g, kMaxSceneObjects, p.count) && good;
     good = g.range("radius", true, kPositive, p.radius_min, p.radius_max) && good;
     good = g.number("dynamic_fraction", false, NumberRule{"a number in [0, 1]", 0.0, false, 1.0},
@@ -120,10 +120,9 @@ bool readForest(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
     const bool height_ok = g.range("height", true, kPositive, p.height_min, p.height_max);
     good = good && crown_ok && height_ok;
     if (crown_ok && height_ok && !(p.height_min > p.crown_radius)) {
-        c.errors.add(g.pathOf("height"), "must have min greater than crown_radius = " +
-                                             formatNumber(p.crown_radius) +
-                                             " (the crown sits on a trunk), got " +
-                                             describe(*g.find("height")));
+        c.errors.add(g.pathOf("height"),
+                     "must have min greater than crown_radius = " + formatNumber(p.crown_radius) +
+                         " (the crown sits on a trunk), got " + describe(*g.find("height")));
         good = false;
     }
     plan.count = 2 * p.count;
@@ -137,10 +136,10 @@ bool readRooms(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
                              "chairs_per_room", "chair_speed"},
                             "for generator 'rooms'");
     int64_t rooms[2] = {1, 1};
-    good = g.integers("rooms", true, 2, 1, kMaxRoomsPerAxis,
-                      "integers in [1, " + std::to_string(kMaxRoomsPerAxis) + "] ([nx, nz])",
-                      rooms) &&
-           good;
+    good =
+        g.integers("rooms", true, 2, 1, kMaxRoomsPerAxis,
+                   "integers in [1, " + std::to_string(kMaxRoomsPerAxis) + "] ([nx, nz])", rooms) &&
+        good;
     const bool size_ok = g.number("room_size", true, kPositive, p.room_size);
     const bool wall_ok = g.number("wall_thickness", true, kPositive, p.wall_thickness);
     const bool door_ok = g.number("door_width", true, kPositive, p.door_width);
@@ -151,15 +150,14 @@ bool readRooms(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
            good;
     good = g.number("chair_speed", true, kNonNegative, p.chair_speed) && good;
     if (size_ok && wall_ok && !(p.wall_thickness < 0.5 * p.room_size)) {
-        c.errors.add(g.pathOf("wall_thickness"), "must be less than half of room_size = " +
-                                                     formatNumber(p.room_size) + ", got " +
-                                                     formatNumber(p.wall_thickness));
+        c.errors.add(g.pathOf("wall_thickness"),
+                     "must be less than half of room_size = " + formatNumber(p.room_size) +
+                         ", got " + formatNumber(p.wall_thickness));
         good = false;
     } else if (size_ok && wall_ok && door_ok && !(p.door_width < p.room_size - p.wall_thickness)) {
-        c.errors.add(g.pathOf("door_width"),
-                     "must be less than room_size - wall_thickness = " +
-                         formatNumber(p.room_size - p.wall_thickness) + ", got " +
-                         formatNumber(p.door_width));
+        c.errors.add(g.pathOf("door_width"), "must be less than room_size - wall_thickness = " +
+                                                 formatNumber(p.room_size - p.wall_thickness) +
+                                                 ", got " + formatNumber(p.door_width));
         good = false;
     }
     p.rooms_x = rooms[0];
@@ -172,8 +170,8 @@ bool readRooms(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
 
 bool readMeshCrowd(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
     MeshCrowdParams p;
-    bool good = g.checkKeys({"type", "file", "count", "scale", "max_speed"},
-                            "for generator 'mesh_crowd'");
+    bool good =
+        g.checkKeys({"type", "file", "count", "scale", "max_speed"}, "for generator 'mesh_crowd'");
     good = readCount(g, kMaxSceneObjects, p.count) && good;
     good = g.range("scale", true, kPositive, p.scale_min, p.scale_max) && good;
     good = g.number("max_speed", true, kNonNegative, p.max_speed) && good;
@@ -215,7 +213,8 @@ void readGenerators(const Json& generators, SceneLoadContext& c, std::vector<Gen
         } else if ((type == "city" || type == "forest" || type == "mesh_crowd") && !is_3d) {
             c.errors.add(g.pathOf("type"), "generator '" + type +
                                                "' does not exist in a 2D scene; must be "
-                                               "sphere_cluster or rooms, got \"" + type + "\"");
+                                               "sphere_cluster or rooms, got \"" +
+                                               type + "\"");
         } else if (type == "city") {
             good = readCity(g, c, plan);
         } else if (type == "forest") {

@@ -31,7 +31,9 @@ void ErrorList::addAt(int line, int column, const std::string& path, const std::
          (path.empty() ? std::string() : " in " + path) + ": " + message);
 }
 
-void ErrorList::addGeneral(const std::string& message) { push(file_ + ": " + message); }
+void ErrorList::addGeneral(const std::string& message) {
+    push(file_ + ": " + message);
+}
 
 void lineAndColumn(const std::string& text, size_t byte_offset, int& line, int& column) {
     line = 1;
@@ -249,9 +251,9 @@ bool parseJson(const std::string& text, ErrorList& errors, Json& out) {
         }
         lineAndColumn(text, position, line, column);
         if (sax.errorId() == 406) {
-            errors.addAt(line, column, sax.errorPath(),
-                         "number " + sax.errorToken() +
-                             " is out of range: must be a finite number");
+            errors.addAt(
+                line, column, sax.errorPath(),
+                "number " + sax.errorToken() + " is out of range: must be a finite number");
         } else {
             errors.addAt(line, column, sax.errorPath(), reasonOf(sax.errorMessage()));
         }
@@ -273,7 +275,9 @@ const Json* JsonObjectReader::find(const char* key) const {
     return it == value_->end() ? nullptr : &*it;
 }
 
-bool JsonObjectReader::has(const char* key) const { return find(key) != nullptr; }
+bool JsonObjectReader::has(const char* key) const {
+    return find(key) != nullptr;
+}
 
 bool JsonObjectReader::checkKeys(std::initializer_list<const char*> allowed,
                                  const std::string& context) {
@@ -325,8 +329,7 @@ bool readNumberValue(const Json& value, const std::string& path, const NumberRul
     return true;
 }
 
-bool JsonObjectReader::number(const char* key, bool required, const NumberRule& rule,
-                              double& out) {
+bool JsonObjectReader::number(const char* key, bool required, const NumberRule& rule, double& out) {
     const Json* v = find(key);
     if (!v) return required ? require(key, rule.expected) : ok_;
     return readNumberValue(*v, pathOf(key), rule, errors_, out);
@@ -380,9 +383,10 @@ bool JsonObjectReader::string(const char* key, bool required, std::string& out) 
 bool readVectorValue(const Json& value, const std::string& path, int count, ErrorList& errors,
                      glm::dvec3& out) {
     if (!value.is_array() || value.size() != size_t(count)) {
-        errors.add(path, "must be " + std::to_string(count) + " numbers [" +
-                             (count == 2 ? "x, y] (the scene is 2D)" : "x, y, z] (the scene is 3D)") +
-                             ", got " + describe(value));
+        errors.add(path,
+                   "must be " + std::to_string(count) + " numbers [" +
+                       (count == 2 ? "x, y] (the scene is 2D)" : "x, y, z] (the scene is 3D)") +
+                       ", got " + describe(value));
         return false;
     }
     glm::dvec3 result{0.0};
@@ -428,8 +432,8 @@ bool JsonObjectReader::range(const char* key, bool required, const NumberRule& r
     return true;
 }
 
-bool JsonObjectReader::integers(const char* key, bool required, int count, int64_t min,
-                                int64_t max, const std::string& expected, int64_t* out) {
+bool JsonObjectReader::integers(const char* key, bool required, int count, int64_t min, int64_t max,
+                                const std::string& expected, int64_t* out) {
     const std::string whole = std::to_string(count) + " " + expected;
     const Json* v = find(key);
     if (!v) return required ? require(key, whole) : ok_;
@@ -442,9 +446,10 @@ bool JsonObjectReader::integers(const char* key, bool required, int count, int64
     for (int i = 0; i < count; ++i) {
         const Json& e = (*v)[size_t(i)];
         const bool integral = e.is_number_integer() || e.is_number_unsigned();
-        const bool in_range = integral && (e.is_number_unsigned()
-                                               ? e.get<uint64_t>() <= uint64_t(max)
-                                               : e.get<int64_t>() >= min && e.get<int64_t>() <= max);
+        const bool in_range =
+            integral &&
+            (e.is_number_unsigned() ? e.get<uint64_t>() <= uint64_t(max)
+                                    : e.get<int64_t>() >= min && e.get<int64_t>() <= max);
         if (!in_range) {
             errors_.add(indexPath(path, size_t(i)), "must be " + expected + ", got " + describe(e));
             good = false;

@@ -102,8 +102,8 @@ public:
     bool require(const char* key, const std::string& expected);
 
     bool number(const char* key, bool required, const NumberRule& rule, double& out);
-    bool integer(const char* key, bool required, int64_t min, int64_t max, const std::string& expected,
-                 int64_t& out);
+    bool integer(const char* key, bool required, int64_t min, int64_t max,
+                 const std::string& expected, int64_t& out);
     bool unsignedInteger(const char* key, bool required, uint64_t& out);
     bool string(const char* key, bool required, std::string& out);
     // `count` numbers (2 or 3), each finite and within kMaxMagnitude; the unused

@@ -13,8 +13,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "culling/scene/random_walk.h"
 #include "culling/io/scene_loader_internal.h"
+#include "culling/scene/random_walk.h"
 
 namespace gridcull {
 
@@ -79,8 +79,8 @@ void readGrid(JsonObjectReader& root, SceneLoadContext& c, bool world_ok) {
             const glm::ivec3 resolution{int(r[0]), int(r[1]), c.dimensions == 2 ? 1 : int(r[2])};
             const std::string problem = checkResolution(c.dimensions, resolution);
             if (!problem.empty()) {
-                c.errors.add("grid.resolution", "must fit in memory: " + problem +
-                                                    ", got " + describe(*grid.find("resolution")));
+                c.errors.add("grid.resolution", "must fit in memory: " + problem + ", got " +
+                                                    describe(*grid.find("resolution")));
                 return;
             }
             c.scene.grid.resolution = resolution;
@@ -119,8 +119,8 @@ bool readCameraKey(const Json& value, const std::string& path, SceneLoadContext&
     if (c.dimensions == 3 && k.has("up")) {
         if (k.vector("up", true, 3, key.up)) {
             if (!(glm::length(key.up) > 0.0)) {
-                c.errors.add(k.pathOf("up"), "must be a non-zero vector, got " +
-                                                 describe(*k.find("up")));
+                c.errors.add(k.pathOf("up"),
+                             "must be a non-zero vector, got " + describe(*k.find("up")));
                 good = false;
             }
         } else {
@@ -138,10 +138,12 @@ void readCamera(JsonObjectReader& root, SceneLoadContext& c) {
     camera.checkKeys({"fov_deg", "aspect", "near", "far", "path"});
     CameraSpec& spec = c.scene.camera;
     if (c.dimensions == 3) {
-        camera.number("fov_deg", false, NumberRule{"a number of degrees in (0, 180)", 0.0, true, 180.0, true},
+        camera.number("fov_deg", false,
+                      NumberRule{"a number of degrees in (0, 180)", 0.0, true, 180.0, true},
                       spec.fov_deg);
     } else {
-        camera.number("fov_deg", false, NumberRule{"a number of degrees in (0, 360]", 0.0, true, 360.0, false},
+        camera.number("fov_deg", false,
+                      NumberRule{"a number of degrees in (0, 360]", 0.0, true, 360.0, false},
                       spec.fov_deg);
     }
     const NumberRule positive{"a finite number > 0", 0.0, true};
@@ -166,9 +168,9 @@ void readCamera(JsonObjectReader& root, SceneLoadContext& c) {
         CameraKey key;
         if (!readCameraKey(path[i], key_path, c, key)) continue;
         if (!spec.path.empty() && !(key.t > spec.path.back().t)) {
-            c.errors.add(childPath(key_path, "t"),
-                         "keys must be in increasing t, got " + formatNumber(key.t) +
-                             " after " + formatNumber(spec.path.back().t));
+            c.errors.add(childPath(key_path, "t"), "keys must be in increasing t, got " +
+                                                       formatNumber(key.t) + " after " +
+                                                       formatNumber(spec.path.back().t));
         }
         spec.path.push_back(key);
     }
@@ -183,8 +185,10 @@ bool numberListedIds(std::vector<ListedObject>& listed, SceneLoadContext& c, int
     for (ListedObject& l : listed) {
         if (l.has_id) continue;
         if (next > INT_MAX) {
-            c.errors.add(l.path, "cannot be given an id: the ids after the largest given id run "
-                                 "past " + std::to_string(INT_MAX));
+            c.errors.add(l.path,
+                         "cannot be given an id: the ids after the largest given id run "
+                         "past " +
+                             std::to_string(INT_MAX));
             return false;
         }
         l.object.id = int(next++);
@@ -202,8 +206,8 @@ void buildRandomWalks(Scene& scene) {
     if (random_objects == 0) return;
     const double duration = std::max(scene.frames * scene.dt, kRandomSegmentSeconds);
     const int64_t wanted = int64_t(std::ceil(duration / kRandomSegmentSeconds - 1e-9));
-    const int64_t budget =
-        std::max<int64_t>(1, std::min(kMaxRandomSegmentsPerObject, kMaxRandomSegments / random_objects));
+    const int64_t budget = std::max<int64_t>(
+        1, std::min(kMaxRandomSegmentsPerObject, kMaxRandomSegments / random_objects));
     const int64_t segments = std::clamp<int64_t>(wanted, 1, budget);
     const double seconds = std::max(kRandomSegmentSeconds, duration / double(segments));
     for (SceneObject& o : scene.objects) {

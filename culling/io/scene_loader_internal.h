@@ -9,9 +9,9 @@
 #include <tuple>
 #include <vector>
 
-#include "culling/scene/scene.h"
 #include "culling/generators/scene_generators.h"
 #include "culling/io/scene_json.h"
+#include "culling/scene/scene.h"
 
 namespace gridcull {
 
@@ -29,7 +29,7 @@ struct SceneLoadContext {
     ErrorList& errors;
     std::string base_dir;  // meshes are resolved against it
     int dimensions = 3;
-    Scene& scene;          // header fields are filled before objects are read
+    Scene& scene;  // header fields are filled before objects are read
     // Objects that name the same file with the same transform share one mesh.
     std::map<MeshKey, std::shared_ptr<const TriangleMesh>> meshes;
 };
@@ -64,6 +64,5 @@ std::shared_ptr<const TriangleMesh> loadSceneMeshFile(const std::string& file, d
 // Reads and validates `generators` (an array) without generating anything.
 void readGenerators(const Json& generators, SceneLoadContext& context,
                     std::vector<GeneratorPlan>& out);
-
 
 }  // namespace gridcull

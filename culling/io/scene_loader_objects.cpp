@@ -9,9 +9,9 @@
 #include <glm/geometric.hpp>
 
 #include "culling/io/mesh_loader.h"
-#include "culling/scene/polygon2d.h"
 #include "culling/io/scene_loader.h"
 #include "culling/io/scene_loader_internal.h"
+#include "culling/scene/polygon2d.h"
 
 namespace gridcull {
 
@@ -104,9 +104,9 @@ bool readMotion(const Json& value, const std::string& path, SceneLoadContext& c,
         double declared = 0.0;
         if (!m.number("max_speed", true, kNonNegative, declared)) return false;
         if (declared < real_speed * (1.0 - kSpeedTolerance)) {
-            c.errors.add(m.pathOf("max_speed"),
-                         "must be at least the real maximum speed " + formatNumber(real_speed) +
-                             " of this " + type + " motion, got " + formatNumber(declared));
+            c.errors.add(m.pathOf("max_speed"), "must be at least the real maximum speed " +
+                                                    formatNumber(real_speed) + " of this " + type +
+                                                    " motion, got " + formatNumber(declared));
             return false;
         }
         motion.max_speed = std::max(declared, real_speed);
@@ -158,7 +158,8 @@ bool readPolygon(JsonObjectReader& r, SceneLoadContext& c, std::vector<glm::dvec
 
 std::shared_ptr<const TriangleMesh> loadSceneMeshFile(const std::string& file, double scale,
                                                       const glm::dvec3& rotation_deg,
-                                                      const std::string& path, SceneLoadContext& c) {
+                                                      const std::string& path,
+                                                      SceneLoadContext& c) {
     const std::filesystem::path full =
         std::filesystem::path(file).is_absolute() || c.base_dir.empty()
             ? std::filesystem::path(file)
@@ -255,11 +256,12 @@ bool readObject(const Json& value, const std::string& path, SceneLoadContext& c,
         }
     } else {
         const bool other_dimension = shape == "circle" || shape == "polygon" || shape == "mesh";
-        c.errors.add(r.pathOf("shape"),
-                     (other_dimension ? "shape '" + shape + "' does not exist in a " +
-                                            std::to_string(c.dimensions) + "D scene; must be one of "
-                                      : std::string("must be one of ")) +
-                         shapes + ", got " + describe(*r.find("shape")));
+        c.errors.add(
+            r.pathOf("shape"),
+            (other_dimension ? "shape '" + shape + "' does not exist in a " +
+                                   std::to_string(c.dimensions) + "D scene; must be one of "
+                             : std::string("must be one of ")) +
+                shapes + ", got " + describe(*r.find("shape")));
         return false;
     }
     if (const Json* motion = r.find("motion"))

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
-#include "culling/scene/object_triangles.h"
 #include "culling/baseline/frustum_tests.h"
+#include "culling/scene/object_triangles.h"
 
 namespace gridcull {
 
@@ -58,8 +58,7 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
     const LazyGridExtensions extensions{options_.probability_threshold,
                                         options_.border_whole_fraction,
                                         options_.large_box_fraction};
-    grid_.configure(width, height, std::max(1, options_.cell_size), variant_, update_,
-                    extensions);
+    grid_.configure(width, height, std::max(1, options_.cell_size), variant_, update_, extensions);
     grid_.begin(target_.get());
 
     const int rebuilds_before = bvh_.rebuilds();

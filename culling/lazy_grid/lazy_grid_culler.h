@@ -54,13 +54,13 @@
 #include <string>
 #include <vector>
 
-#include "culling/lazy_grid/bounding_volume_hierarchy.h"
 #include "culling/api/culler.h"
+#include "culling/lazy_grid/bounding_volume_hierarchy.h"
 #include "culling/lazy_grid/lazy_grid.h"
 #include "culling/lazy_grid/lazy_grid_options.h"
-#include "culling/raster/software_image_target.h"
-#include "culling/raster/screen_mapping.h"
 #include "culling/lazy_grid/lazy_grid_snapshot.h"
+#include "culling/raster/screen_mapping.h"
+#include "culling/raster/software_image_target.h"
 
 namespace gridcull {
 

@@ -29,8 +29,7 @@ void ExactOracle::reset(const Scene& scene) {
         if (object.mesh) largest_mesh = std::max(largest_mesh, object.mesh->vertices.size());
     id_buffer_.reserveMeshVertices(largest_mesh);
     if (scene.dimensions == 2) {
-        sweep_.resize(rayCount(options_.rays_per_turn, scene.camera.fov_deg),
-                      scene.camera.fov_deg);
+        sweep_.resize(rayCount(options_.rays_per_turn, scene.camera.fov_deg), scene.camera.fov_deg);
     } else {
         int width, height;
         imageSize(options_.resolution, scene.camera.aspect, width, height);

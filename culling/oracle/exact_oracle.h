@@ -44,9 +44,9 @@
 #include <vector>
 
 #include "culling/api/culler.h"
+#include "culling/oracle/exact_oracle_sweep.h"
 #include "culling/oracle/oracle_options.h"
 #include "culling/raster/id_depth_buffer.h"
-#include "culling/oracle/exact_oracle_sweep.h"
 
 namespace gridcull {
 

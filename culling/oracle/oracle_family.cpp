@@ -6,8 +6,7 @@ namespace gridcull {
 
 const KnobTable<OracleOptions>& oracleKnobs() {
     static const KnobTable<OracleOptions> table{
-        knob("oracle-res", &OracleOptions::resolution, kMinOracleResolution,
-             kMaxOracleResolution,
+        knob("oracle-res", &OracleOptions::resolution, kMinOracleResolution, kMaxOracleResolution,
              "3D: pixels on the long side of the oracle's ID buffer; an object seen only "
              "through a gap narrower than a pixel is missed, so higher finds more false "
              "culls, at about quadratic cost"),

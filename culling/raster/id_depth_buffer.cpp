@@ -244,7 +244,7 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
 }
 
 void IdDepthBuffer::boxPixels(int index, const Aabb& box, double z_min, int col_lo, int col_hi,
-                               int row_lo, int row_hi) {
+                              int row_lo, int row_hi) {
     for (int py = row_lo; py <= row_hi; ++py) {
         const glm::dvec3 row_dir = forward_ + row_v_[size_t(py)] * up_;
         double* depth_row = depth_.data() + size_t(py) * size_t(width_);

@@ -40,8 +40,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "culling/scene/camera.h"
 #include "culling/raster/pixel_range.h"
+#include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull {

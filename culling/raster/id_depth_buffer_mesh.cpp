@@ -104,7 +104,7 @@ void IdDepthBuffer::clipAndRaster(int index, const glm::dvec3 tri[3], bool parit
 }
 
 void IdDepthBuffer::rasterTriangle(int index, const glm::dvec3& a, const glm::dvec3& b,
-                                    const glm::dvec3& c, bool parity) {
+                                   const glm::dvec3& c, bool parity) {
     // Continuous pixel coordinates: the centre of pixel (px, py) is (px + 0.5, py + 0.5).
     auto project = [&](const glm::dvec3& p) {
         return ScreenVertex{columnOf(p.x / p.z) + 0.5, rowOf(p.y / p.z) + 0.5, 1.0 / p.z};

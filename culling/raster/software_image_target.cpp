@@ -27,8 +27,7 @@ void SoftwareImageTarget::prepare(const Scene& scene) {
     zbuffer_.reserveMeshVertices(vertices);
 }
 
-void SoftwareImageTarget::begin(const Camera& camera, int width, int height,
-                                   bool occlusion_bits) {
+void SoftwareImageTarget::begin(const Camera& camera, int width, int height, bool occlusion_bits) {
     zbuffer_.resize(width, height);
     zbuffer_.begin(camera);
     occlusion_bits_ = occlusion_bits;
@@ -39,7 +38,7 @@ void SoftwareImageTarget::begin(const Camera& camera, int width, int height,
 }
 
 bool SoftwareImageTarget::draw(const SceneObject& object, int index, const glm::dvec3& shift,
-                                  const PixelRect& /*image_area*/, PixelRect& written) {
+                               const PixelRect& /*image_area*/, PixelRect& written) {
     bool drawn = false;
     switch (object.shape) {
         case ShapeKind::Sphere:

@@ -144,7 +144,8 @@ std::unique_ptr<Culler> makeCuller(std::string_view name, const KnobValues& knob
                                    const std::string& display_name) {
     const FamilyEntry* family = familyOfAlgorithm(name);
     if (!family) {
-        error = "unknown algorithm '" + std::string(name) + "', expected one of: " + algorithmList();
+        error =
+            "unknown algorithm '" + std::string(name) + "', expected one of: " + algorithmList();
         return nullptr;
     }
     if (target && !family->draws_image) {

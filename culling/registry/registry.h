@@ -54,7 +54,8 @@ int referenceResolution(const KnobValues& knobs);
 // family that draws an image, replaces the software rasterizer; `display_name`
 // (non-empty) replaces the culler's name(), e.g. "NAME-gl".
 std::unique_ptr<Culler> makeCuller(std::string_view name, const KnobValues& knobs,
-                                   std::string& error, std::unique_ptr<ImageTarget> target = nullptr,
+                                   std::string& error,
+                                   std::unique_ptr<ImageTarget> target = nullptr,
                                    const std::string& display_name = "");
 
 }  // namespace gridcull

@@ -21,18 +21,22 @@ double maxSpeedOf(const SceneObject& object) {
     const Motion& m = object.motion;
     double speed = m.max_speed;
     switch (m.kind) {
-    case MotionKind::Static: return 0.0;
-    case MotionKind::Linear: speed = std::max(speed, glm::length(m.velocity)); break;
-    case MotionKind::Random:
-        for (const glm::dvec3& v : m.segment_velocities) speed = std::max(speed, glm::length(v));
-        break;
-    case MotionKind::Keyframes:
-        for (size_t i = 1; i < m.keys.size(); ++i) {
-            const double span = m.keys[i].t - m.keys[i - 1].t;
-            const double dist = glm::length(m.keys[i].position - m.keys[i - 1].position);
-            if (span > 0.0) speed = std::max(speed, dist / span);
-        }
-        break;
+        case MotionKind::Static:
+            return 0.0;
+        case MotionKind::Linear:
+            speed = std::max(speed, glm::length(m.velocity));
+            break;
+        case MotionKind::Random:
+            for (const glm::dvec3& v : m.segment_velocities)
+                speed = std::max(speed, glm::length(v));
+            break;
+        case MotionKind::Keyframes:
+            for (size_t i = 1; i < m.keys.size(); ++i) {
+                const double span = m.keys[i].t - m.keys[i - 1].t;
+                const double dist = glm::length(m.keys[i].position - m.keys[i - 1].position);
+                if (span > 0.0) speed = std::max(speed, dist / span);
+            }
+            break;
     }
     return speed;
 }
@@ -41,14 +45,16 @@ double maxSpeedOf(const SceneObject& object) {
 double boundingRadiusOf(const SceneObject& object) {
     const glm::dvec3 a = object.anchor;
     switch (object.shape) {
-    case ShapeKind::Sphere: return object.radius + glm::length(object.center - a);
-    case ShapeKind::Polygon: {
-        double r = 0.0;
-        for (const glm::dvec3& p : object.points) r = std::max(r, glm::length(p - a));
-        return r;
-    }
-    case ShapeKind::Box:
-    case ShapeKind::Mesh: break;
+        case ShapeKind::Sphere:
+            return object.radius + glm::length(object.center - a);
+        case ShapeKind::Polygon: {
+            double r = 0.0;
+            for (const glm::dvec3& p : object.points) r = std::max(r, glm::length(p - a));
+            return r;
+        }
+        case ShapeKind::Box:
+        case ShapeKind::Mesh:
+            break;
     }
     const Aabb& b = object.bounds;
     double r = 0.0;
@@ -81,7 +87,8 @@ void RgvcCuller::reset(const Scene& scene) {
         const double longest = std::max(extent.x, extent.y);
         glm::ivec3 res{1, 1, 1};
         for (int axis = 0; axis < 2; ++axis)
-            res[axis] = std::max(1, int(std::lround(options_.grid_resolution * extent[axis] / longest)));
+            res[axis] =
+                std::max(1, int(std::lround(options_.grid_resolution * extent[axis] / longest)));
         if (checkResolution(2, res).empty()) grid_.resolution = res;
     }
     voxel_size_ = grid_.voxelSize();
@@ -113,7 +120,10 @@ void RgvcCuller::reset(const Scene& scene) {
     open_.resize(w, h);
     // Os only with static objects. The id-list matrices take memory on their first
     // add, so I's two parts and T cost nothing where the scene writes nothing.
-    if (has_static_) static_occluder_.resize(w, h); else static_occluder_.release();
+    if (has_static_)
+        static_occluder_.resize(w, h);
+    else
+        static_occluder_.release();
     identifiers_static_.resize(w, h, false);
     identifiers_dynamic_.resize(w, h, true);
     tbv_matrix_.resize(w, h, false);
@@ -134,11 +144,13 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         // view-frustum culling of the bounds, which is conservative, for callers
         // that cull anyway.
         for (const SceneObject& object : scene.objects)
-            if (boxMayIntersectFrustum(scene.boundsAt(object, t), camera)) out.pvs.push_back(object.id);
+            if (boxMayIntersectFrustum(scene.boundsAt(object, t), camera))
+                out.pvs.push_back(object.id);
         std::sort(out.pvs.begin(), out.pvs.end());
         return;
     }
-    if (!ready_ || scene.objects.size() != object_count_ || (frame_ > 0 && t < last_t_)) reset(scene);
+    if (!ready_ || scene.objects.size() != object_count_ || (frame_ > 0 && t < last_t_))
+        reset(scene);
     ++frame_;
     t_ = t;
     out_ = &out;
@@ -162,13 +174,18 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
             return int(std::clamp(std::floor(u), -1.0, double(hi)));
         };
         clip_x0_ = std::max(0, cell((x0 - o.x) / voxel_size_.x, grid_.resolution.x));
-        clip_x1_ = std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
+        clip_x1_ =
+            std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
         clip_y0_ = std::max(0, cell((y0 - o.y) / voxel_size_.y, grid_.resolution.y));
-        clip_y1_ = std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
+        clip_y1_ =
+            std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
     }
 
     // Step 1: scene discretization (s4.1, s4.5).
-    if (has_static_) occluder_.copyFrom(static_occluder_); else occluder_.clearAll();
+    if (has_static_)
+        occluder_.copyFrom(static_occluder_);
+    else
+        occluder_.clearAll();
     occlusion_.clearAll();
     open_.clearAll();
     identifiers_dynamic_.clear();
@@ -185,7 +202,8 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         traverse(scene);
     }
 
-    for (const int index : dynamic_) in_last_pvs_[size_t(index)] = pvs_stamp_[size_t(index)] == frame_;
+    for (const int index : dynamic_)
+        in_last_pvs_[size_t(index)] = pvs_stamp_[size_t(index)] == frame_;
     for (int& entry : out.pvs) entry = scene.objects[size_t(entry)].id;
     std::sort(out.pvs.begin(), out.pvs.end());
     out.stats.set(Counter::VoxelsVisited, voxels_visited_);

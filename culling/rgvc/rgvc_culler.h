@@ -39,7 +39,8 @@
 //  - A TBV whose digital circle would leave the grid is not written into T but
 //    kept in a list and revealed when its disc touches the frustum (a ray could
 //    otherwise reach the object around the outside of the grid).
-//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the paper suggests) so that the
+//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the paper suggests) so
+//  that the
 //    circle leaves the viewer's voxel outside; when even one frame's validity
 //    would not, the TBV is written filled. When the viewer's voxel jumps by more
 //    than one voxel between frames (a teleport: the 8-connected path condition
@@ -137,10 +138,10 @@ private:
     RegularGrid grid_;
     glm::dvec3 voxel_size_{1.0};
 
-    BitMatrix occluder_;         // O
-    BitMatrix static_occluder_;  // Os
-    BitMatrix occlusion_;        // H
-    BitMatrix open_;             // voxels the traversal passed non-occluded this frame
+    BitMatrix occluder_;                // O
+    BitMatrix static_occluder_;         // Os
+    BitMatrix occlusion_;               // H
+    BitMatrix open_;                    // voxels the traversal passed non-occluded this frame
     IdListMatrix identifiers_static_;   // I, static objects
     IdListMatrix identifiers_dynamic_;  // I, dynamic objects, rebuilt every frame
     IdListMatrix tbv_matrix_;           // T
@@ -152,9 +153,9 @@ private:
     std::vector<double> max_speed_;     // per object index
     std::vector<double> bound_radius_;  // per object index, around its anchor
     std::vector<uint8_t> in_last_pvs_;
-    std::vector<int64_t> pvs_stamp_;    // == frame_ once in this frame's PVS
+    std::vector<int64_t> pvs_stamp_;  // == frame_ once in this frame's PVS
     std::vector<Tbv> tbv_;
-    std::vector<int> edge_tbvs_;        // object indices with edge TBVs
+    std::vector<int> edge_tbvs_;  // object indices with edge TBVs
     std::vector<int> reveal_scratch_;
 
     // Per frame.

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "culling/rgvc/rgvc_culler.h"
 #include "culling/baseline/frustum_tests.h"
+#include "culling/rgvc/rgvc_culler.h"
 #include "grid/conservative_raster.h"
 
 namespace gridcull {
@@ -25,18 +25,19 @@ template <typename Touched, typename Inside>
 void rasterizeObject(const RegularGrid& grid, const SceneObject& object, const glm::dvec3& shift,
                      Touched&& touched, Inside&& inside) {
     switch (object.shape) {
-    case ShapeKind::Sphere:
-        rasterizeCircle(grid, object.center + shift, object.radius, touched, inside);
-        return;
-    case ShapeKind::Box:
-        rasterizeBox(grid, object.box.translated(shift), touched, inside);
-        return;
-    case ShapeKind::Polygon:
-        rasterizePolygon(grid, object.points.data(), object.points.size(), shift, touched, inside);
-        return;
-    case ShapeKind::Mesh:
-        rasterizeBox(grid, object.bounds.translated(shift), touched, [](int, int, int) {});
-        return;
+        case ShapeKind::Sphere:
+            rasterizeCircle(grid, object.center + shift, object.radius, touched, inside);
+            return;
+        case ShapeKind::Box:
+            rasterizeBox(grid, object.box.translated(shift), touched, inside);
+            return;
+        case ShapeKind::Polygon:
+            rasterizePolygon(grid, object.points.data(), object.points.size(), shift, touched,
+                             inside);
+            return;
+        case ShapeKind::Mesh:
+            rasterizeBox(grid, object.bounds.translated(shift), touched, [](int, int, int) {});
+            return;
     }
 }
 

@@ -22,8 +22,7 @@ FamilyEntry rgvcFamily() {
     FamilyEntry family;
     family.id = "rgvc";
     family.title = "Regular-grid culling (Batagelo & Wu)";
-    family.algorithms = {{"rgvc", kRuns2d,
-                          "regular-grid culling with temporal bounding volumes"}};
+    family.algorithms = {{"rgvc", kRuns2d, "regular-grid culling with temporal bounding volumes"}};
     family.knobs = rgvcKnobs().knobs();
     family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
         return std::make_unique<RgvcCuller>(rgvcKnobs().read(*request.knobs));

@@ -16,7 +16,9 @@ namespace {
 
 constexpr double kPi = 3.141592653589793238462643383279;
 
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+double cross(glm::dvec2 a, glm::dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 int64_t positiveMod(int64_t a, int64_t n) {
     const int64_t m = a % n;
@@ -112,11 +114,17 @@ int64_t RgvcWedge::exitIndex(const RegularGrid& grid, glm::i64vec2 viewer, int64
     const glm::dvec3 d = grid.voxelSize();
     const glm::dvec3& o = grid.world.min;
     // The outer square of ring k: voxels viewer - k .. viewer + k on both axes.
-    const double lo_x = o.x + double(viewer.x - k) * d.x, hi_x = o.x + double(viewer.x + k + 1) * d.x;
-    const double lo_y = o.y + double(viewer.y - k) * d.y, hi_y = o.y + double(viewer.y + k + 1) * d.y;
+    const double lo_x = o.x + double(viewer.x - k) * d.x,
+                 hi_x = o.x + double(viewer.x + k + 1) * d.x;
+    const double lo_y = o.y + double(viewer.y - k) * d.y,
+                 hi_y = o.y + double(viewer.y + k + 1) * d.y;
     const double inf = std::numeric_limits<double>::infinity();
-    const double tx = dir.x > 0.0 ? (hi_x - apex_.x) / dir.x : dir.x < 0.0 ? (lo_x - apex_.x) / dir.x : inf;
-    const double ty = dir.y > 0.0 ? (hi_y - apex_.y) / dir.y : dir.y < 0.0 ? (lo_y - apex_.y) / dir.y : inf;
+    const double tx = dir.x > 0.0   ? (hi_x - apex_.x) / dir.x
+                      : dir.x < 0.0 ? (lo_x - apex_.x) / dir.x
+                                    : inf;
+    const double ty = dir.y > 0.0   ? (hi_y - apex_.y) / dir.y
+                      : dir.y < 0.0 ? (lo_y - apex_.y) / dir.y
+                                    : inf;
     const double t = std::max(0.0, std::min(tx, ty));
     auto relative = [&](double world, double origin, double size, int64_t centre) {
         const double cell = std::floor((world - origin) / size) - double(centre);
@@ -187,7 +195,8 @@ void RgvcWedge::bounds(double& x0, double& y0, double& x1, double& y1) const {
     const glm::dvec2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     for (const glm::dvec2& axis : axes) {
         const glm::dvec2 p = apex_ + axis;
-        const bool in = full_ || (fov_ < kPi ? inConvexWedge(p.x, p.y) : !strictlyInComplement(p.x, p.y));
+        const bool in =
+            full_ || (fov_ < kPi ? inConvexWedge(p.x, p.y) : !strictlyInComplement(p.x, p.y));
         if (in) add(axis);
     }
     x0 -= slack_, y0 -= slack_, x1 += slack_, y1 += slack_;

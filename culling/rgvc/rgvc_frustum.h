@@ -74,12 +74,13 @@ public:
     void bounds(double& x0, double& y0, double& x1, double& y1) const;
 
 private:
-    bool inConvexWedge(double px, double py) const;  // fov < 180 only
+    bool inConvexWedge(double px, double py) const;         // fov < 180 only
     bool strictlyInComplement(double px, double py) const;  // fov >= 180 only
     bool rayMeetsBox(glm::dvec2 dir, double x0, double y0, double x1, double y1) const;
     // Perimeter index on ring k of the voxel where the ray from the apex along
     // `dir` leaves the ring's outer square.
-    int64_t exitIndex(const RegularGrid& grid, glm::i64vec2 viewer, int64_t k, glm::dvec2 dir) const;
+    int64_t exitIndex(const RegularGrid& grid, glm::i64vec2 viewer, int64_t k,
+                      glm::dvec2 dir) const;
 
     glm::dvec2 apex_{0.0};
     glm::dvec2 forward_{1.0, 0.0};

@@ -12,7 +12,9 @@ namespace gridcull {
 
 namespace {
 
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+double cross(glm::dvec2 a, glm::dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 HalfPlane2 unitPlane(double nx, double ny, glm::dvec2 through) {
     const double len = std::hypot(nx, ny);

@@ -63,9 +63,9 @@ struct RgvcExtendedOccluder {
     glm::ivec2 toward{-1, -1};  // per axis, the sign pointing to the viewer's voxel
     bool primary_is_y = false;  // axis a is y (the viewer is on the initial row)
     std::array<RgvcExtensionStep, 4> steps{};
-    glm::ivec2 corner{0};       // the L's corner voxel
-    int leg_x = 0;              // voxels of the x leg beyond the corner (direction -toward.x)
-    int leg_y = 0;              // voxels of the y leg beyond the corner (direction -toward.y)
+    glm::ivec2 corner{0};  // the L's corner voxel
+    int leg_x = 0;         // voxels of the x leg beyond the corner (direction -toward.x)
+    int leg_y = 0;         // voxels of the y leg beyond the corner (direction -toward.y)
 
     glm::ivec2 legXEnd() const { return corner + glm::ivec2(-toward.x * leg_x, 0); }
     glm::ivec2 legYEnd() const { return corner + glm::ivec2(0, -toward.y * leg_y); }
@@ -92,9 +92,8 @@ RgvcExtendedOccluder extendOccluder(glm::ivec2 initial, glm::i64vec2 viewer, int
         s.from = from;
         s.direction = dir;
         s.run = true;
-        for (glm::ivec2 v = from + dir; v.x >= 0 && v.y >= 0 && v.x < width && v.y < height &&
-                                        blocking(v.x, v.y);
-             v += dir)
+        for (glm::ivec2 v = from + dir;
+             v.x >= 0 && v.y >= 0 && v.x < width && v.y < height && blocking(v.x, v.y); v += dir)
             ++s.count;
         return s;
     };
@@ -153,8 +152,8 @@ int64_t rasterizeOcclusionPolygon(const RgvcOcclusionPolygon& polygon, const Reg
                                   int x_lo, int x_hi, int y_lo, int y_hi, Mark&& mark) {
     std::array<HalfPlane2, 4> planes;
     for (int i = 0; i < polygon.plane_count; ++i)
-        planes[size_t(i)] = wholeVoxelsOnly(toVoxelCentreCoords(polygon.planes[size_t(i)], grid),
-                                            kOcclusionSlack);
+        planes[size_t(i)] =
+            wholeVoxelsOnly(toVoxelCentreCoords(polygon.planes[size_t(i)], grid), kOcclusionSlack);
     int64_t marked = 0;
     rasterizeConvexAtCentres(planes.data(), polygon.plane_count, x_lo, x_hi, y_lo, y_hi,
                              [&](int y, int x0, int x1) {

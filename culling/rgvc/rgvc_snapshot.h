@@ -107,8 +107,8 @@ struct RgvcSnapshot final : DebugSnapshot {
     std::vector<RgvcOccluderView> occluders;
     std::vector<RgvcTbvView> tbv_list;
     int64_t first_layer = 0;
-    int64_t last_layer = -1;          // the last layer traversed
-    bool terminated_early = false;    // stopped after a wholly occluded layer
+    int64_t last_layer = -1;        // the last layer traversed
+    bool terminated_early = false;  // stopped after a wholly occluded layer
     RgvcMatrixMemory memory;
 };
 

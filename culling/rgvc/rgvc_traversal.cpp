@@ -30,10 +30,18 @@ int64_t positiveMod(int64_t a, int64_t n) {
 // Side s of ring k: the offset of its first position and the step along it.
 void ringSide(int64_t k, int64_t side, glm::i64vec2& base, glm::i64vec2& step) {
     switch (side) {
-    case 0: base = {k, -k}, step = {0, 1}; return;
-    case 1: base = {k, k}, step = {-1, 0}; return;
-    case 2: base = {-k, k}, step = {0, -1}; return;
-    default: base = {-k, -k}, step = {1, 0}; return;
+        case 0:
+            base = {k, -k}, step = {0, 1};
+            return;
+        case 1:
+            base = {k, k}, step = {-1, 0};
+            return;
+        case 2:
+            base = {-k, k}, step = {0, -1};
+            return;
+        default:
+            base = {-k, -k}, step = {1, 0};
+            return;
     }
 }
 
@@ -55,8 +63,8 @@ void RgvcCuller::traverse(const Scene& scene) {
     const int64_t gap_x = std::max({int64_t(0), -viewer_.x, viewer_.x - (w - 1)});
     const int64_t gap_y = std::max({int64_t(0), -viewer_.y, viewer_.y - (h - 1)});
     const int64_t first = std::max(gap_x, gap_y);
-    int64_t last = std::max({std::abs(viewer_.x), std::abs(viewer_.x - (w - 1)), std::abs(viewer_.y),
-                             std::abs(viewer_.y - (h - 1))});
+    int64_t last = std::max({std::abs(viewer_.x), std::abs(viewer_.x - (w - 1)),
+                             std::abs(viewer_.y), std::abs(viewer_.y - (h - 1))});
     // A voxel of layer k is at least (k - 1) voxel sides from the viewpoint.
     const double side = std::min(voxel_size_.x, voxel_size_.y);
     const double far_layers = std::floor(wedge_.far() / side) + 2.0;
@@ -113,7 +121,8 @@ void RgvcCuller::visitArc(const Scene& scene, int64_t k, const RingRun& run, boo
     const glm::dvec3& d = voxel_size_;
     if (k == 0) {
         if (grid_.inside({int(viewer_.x), int(viewer_.y), 0})) {
-            if (wedge_.touchesVoxel(grid_, viewer_)) visitVoxel(scene, int(viewer_.x), int(viewer_.y), 0);
+            if (wedge_.touchesVoxel(grid_, viewer_))
+                visitVoxel(scene, int(viewer_.x), int(viewer_.y), 0);
         } else if (wedge_.touchesVoxel(grid_, viewer_)) {
             layer_leaves_grid_ = true;
         }
@@ -164,9 +173,10 @@ void RgvcCuller::visitArc(const Scene& scene, int64_t k, const RingRun& run, boo
                 const glm::i64vec2 v = origin + step * u;
                 // Voxels of the run's inner part lie in the wedge; within far too
                 // when the whole layer does.
-                const bool surely_in =
-                    within_far && positiveMod(side_start + u - run.inner_start, n) < run.inner_length;
-                if (surely_in || wedge_.touchesVoxel(grid_, v)) visitVoxel(scene, int(v.x), int(v.y), k);
+                const bool surely_in = within_far && positiveMod(side_start + u - run.inner_start,
+                                                                 n) < run.inner_length;
+                if (surely_in || wedge_.touchesVoxel(grid_, v))
+                    visitVoxel(scene, int(v.x), int(v.y), k);
             }
         }
         p = positiveMod(p + dir * piece, n);
@@ -203,10 +213,9 @@ void RgvcCuller::occludeFrom(int x, int y, int64_t k) {
     const int count = occlusionPolygons(occ, grid_, wedge_.apex(), polygons);
     int64_t marked = 0;
     for (int i = 0; i < count; ++i)
-        marked += rasterizeOcclusionPolygon(polygons[size_t(i)], grid_, clip_x0_, clip_x1_, clip_y0_,
-                                            clip_y1_, [&](int row, int x0, int x1) {
-                                                occlusion_.setRun(row, x0, x1);
-                                            });
+        marked += rasterizeOcclusionPolygon(
+            polygons[size_t(i)], grid_, clip_x0_, clip_x1_, clip_y0_, clip_y1_,
+            [&](int row, int x0, int x1) { occlusion_.setRun(row, x0, x1); });
     if (snapshot_enabled_) {
         RgvcOccluderView view;
         view.layer = k;

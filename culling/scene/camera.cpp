@@ -49,12 +49,9 @@ std::array<glm::dvec4, 6> Camera::frustumPlanes() const {
     auto through = [&](const glm::dvec3& n, const glm::dvec3& p) {
         return glm::dvec4(n, -glm::dot(n, p));
     };
-    return {through(left_n, position),
-            through(right_n, position),
-            through(bottom_n, position),
-            through(top_n, position),
-            through(fwd, position + fwd * near),
-            through(-fwd, position + fwd * far)};
+    return {through(left_n, position),           through(right_n, position),
+            through(bottom_n, position),         through(top_n, position),
+            through(fwd, position + fwd * near), through(-fwd, position + fwd * far)};
 }
 
 Camera cameraAt(const Scene& scene, double t) {

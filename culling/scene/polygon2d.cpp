@@ -10,7 +10,9 @@ double cross(const glm::dvec3& o, const glm::dvec3& a, const glm::dvec3& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-int sign(double v) { return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0); }
+int sign(double v) {
+    return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
+}
 
 // p lies on segment [a, b], given that the three are collinear.
 bool withinBox(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& p) {
@@ -51,7 +53,8 @@ std::string checkSimpleCounterClockwise(const std::vector<glm::dvec3>& points) {
         for (size_t j = i + 2; j < n; ++j) {
             if (i == 0 && j == n - 1) continue;  // the closing edge is a neighbour of edge 0
             if (segmentsTouch(a, b, points[j], points[(j + 1) % n]))
-                return "edges " + std::to_string(i) + " and " + std::to_string(j) + " cross or touch";
+                return "edges " + std::to_string(i) + " and " + std::to_string(j) +
+                       " cross or touch";
         }
     }
     const double area = signedDoubleArea(points);

@@ -10,20 +10,28 @@ namespace gridcull {
 
 const char* shapeName(ShapeKind kind, int dimensions) {
     switch (kind) {
-    case ShapeKind::Sphere: return dimensions == 2 ? "circle" : "sphere";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Polygon: return "polygon";
-    case ShapeKind::Mesh: return "mesh";
+        case ShapeKind::Sphere:
+            return dimensions == 2 ? "circle" : "sphere";
+        case ShapeKind::Box:
+            return "box";
+        case ShapeKind::Polygon:
+            return "polygon";
+        case ShapeKind::Mesh:
+            return "mesh";
     }
     return "?";
 }
 
 const char* motionName(MotionKind kind) {
     switch (kind) {
-    case MotionKind::Static: return "static";
-    case MotionKind::Linear: return "linear";
-    case MotionKind::Keyframes: return "keyframes";
-    case MotionKind::Random: return "random";
+        case MotionKind::Static:
+            return "static";
+        case MotionKind::Linear:
+            return "linear";
+        case MotionKind::Keyframes:
+            return "keyframes";
+        case MotionKind::Random:
+            return "random";
     }
     return "?";
 }
@@ -111,14 +119,15 @@ glm::dvec3 randomWalkOffset(const Motion& m, double t) {
 glm::dvec3 Scene::displacementAt(const SceneObject& object, double t) const {
     const Motion& m = object.motion;
     switch (m.kind) {
-    case MotionKind::Static: return glm::dvec3(0.0);
-    case MotionKind::Linear:
-        return reflectInWorld(m.velocity * t, object.bounds, grid.world, dimensions);
-    case MotionKind::Keyframes:
-        if (m.keys.empty()) return glm::dvec3(0.0);
-        return keyframePosition(m.keys, t) - object.anchor;
-    case MotionKind::Random:
-        return reflectInWorld(randomWalkOffset(m, t), object.bounds, grid.world, dimensions);
+        case MotionKind::Static:
+            return glm::dvec3(0.0);
+        case MotionKind::Linear:
+            return reflectInWorld(m.velocity * t, object.bounds, grid.world, dimensions);
+        case MotionKind::Keyframes:
+            if (m.keys.empty()) return glm::dvec3(0.0);
+            return keyframePosition(m.keys, t) - object.anchor;
+        case MotionKind::Random:
+            return reflectInWorld(randomWalkOffset(m, t), object.bounds, grid.world, dimensions);
     }
     return glm::dvec3(0.0);
 }
@@ -136,25 +145,25 @@ Aabb Scene::boundsAt(const SceneObject& object, double t) const {
 
 void computeAnchorAndBounds(SceneObject& o, int dimensions) {
     switch (o.shape) {
-    case ShapeKind::Sphere: {
-        glm::dvec3 r{o.radius, o.radius, dimensions == 2 ? 0.0 : o.radius};
-        o.bounds = {o.center - r, o.center + r};
-        o.anchor = o.center;
-        break;
-    }
-    case ShapeKind::Box:
-        o.bounds = o.box;
-        o.anchor = o.box.center();
-        break;
-    case ShapeKind::Polygon:
-        o.bounds = {o.points.front(), o.points.front()};
-        for (const glm::dvec3& p : o.points) o.bounds.merge({p, p});
-        o.anchor = o.bounds.center();
-        break;
-    case ShapeKind::Mesh:
-        o.bounds = o.mesh->bounds.translated(o.center);
-        o.anchor = o.center;
-        break;
+        case ShapeKind::Sphere: {
+            glm::dvec3 r{o.radius, o.radius, dimensions == 2 ? 0.0 : o.radius};
+            o.bounds = {o.center - r, o.center + r};
+            o.anchor = o.center;
+            break;
+        }
+        case ShapeKind::Box:
+            o.bounds = o.box;
+            o.anchor = o.box.center();
+            break;
+        case ShapeKind::Polygon:
+            o.bounds = {o.points.front(), o.points.front()};
+            for (const glm::dvec3& p : o.points) o.bounds.merge({p, p});
+            o.anchor = o.bounds.center();
+            break;
+        case ShapeKind::Mesh:
+            o.bounds = o.mesh->bounds.translated(o.center);
+            o.anchor = o.center;
+            break;
     }
 }
 

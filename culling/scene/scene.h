@@ -40,9 +40,9 @@ struct TriangleMesh {
 
 struct Motion {
     MotionKind kind = MotionKind::Static;
-    glm::dvec3 velocity{0.0};        // Linear
-    std::vector<PositionKey> keys;   // Keyframes: positions of the anchor
-    double max_speed = 0.0;          // the real one, or the larger declared one
+    glm::dvec3 velocity{0.0};       // Linear
+    std::vector<PositionKey> keys;  // Keyframes: positions of the anchor
+    double max_speed = 0.0;         // the real one, or the larger declared one
     // Random: a seeded walk, precomputed as one velocity per segment.
     double segment_seconds = 1.0;
     std::vector<glm::dvec3> segment_velocities;
@@ -56,10 +56,10 @@ struct SceneObject {
     int id = 0;
     ShapeKind shape = ShapeKind::Sphere;
     // Geometry at t = 0 in world coordinates:
-    glm::dvec3 center{0.0};          // Sphere
-    double radius = 0.0;             // Sphere
-    Aabb box;                        // Box
-    std::vector<glm::dvec3> points;  // Polygon, counter-clockwise, z = 0
+    glm::dvec3 center{0.0};                    // Sphere
+    double radius = 0.0;                       // Sphere
+    Aabb box;                                  // Box
+    std::vector<glm::dvec3> points;            // Polygon, counter-clockwise, z = 0
     std::shared_ptr<const TriangleMesh> mesh;  // Mesh: vertices relative to `center`
     Motion motion;
 
@@ -97,7 +97,7 @@ struct Scene {
     std::string name;
     std::string source_path;  // the file it came from, "" for built-in scenes
     int dimensions = 3;
-    RegularGrid grid;         // world box and resolution
+    RegularGrid grid;  // world box and resolution
     int frames = 100;
     double dt = 0.04;
     uint64_t seed = 1;

@@ -13,9 +13,9 @@ constexpr int64_t kMaxSceneObjects = 1'000'000;  // listed plus generated
 // details, which the renderer's float depth and positions cannot resolve, and
 // products of such numbers (areas, speed times duration) head for overflow.
 constexpr double kMaxSceneCoordinate = 1e7;
-constexpr int64_t kMaxSceneFrames = 1'000'000;   // time.frames
-constexpr size_t kMaxPolygonPoints = 4096;       // the simplicity check is O(n^2)
-constexpr size_t kMaxPathKeys = 100'000;         // camera.path and motion.keys each
+constexpr int64_t kMaxSceneFrames = 1'000'000;  // time.frames
+constexpr size_t kMaxPolygonPoints = 4096;      // the simplicity check is O(n^2)
+constexpr size_t kMaxPathKeys = 100'000;        // camera.path and motion.keys each
 // Random motion is precomputed as one velocity per segment of this length
 // (seconds) over the scene's duration; when the scene has very many random
 // objects or a very long duration, segments get longer so that all of them

@@ -15,7 +15,8 @@ class SeededRandom {
 public:
     explicit SeededRandom(uint64_t seed) : state_(seed) {}
     // Two seeds combined into one stream, e.g. (scene seed, object id).
-    SeededRandom(uint64_t seed, uint64_t stream) : state_(seed ^ mix(stream + 0x632be59bd9b4e019ull)) {}
+    SeededRandom(uint64_t seed, uint64_t stream)
+        : state_(seed ^ mix(stream + 0x632be59bd9b4e019ull)) {}
 
     uint64_t next() {
         state_ += 0x9e3779b97f4a7c15ull;

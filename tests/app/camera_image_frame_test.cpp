@@ -11,9 +11,9 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "ui/lazy_grid/lazy_grid_overlay.h"
 #include "app/view_camera.h"
 #include "culling/scene/camera.h"
+#include "ui/lazy_grid/lazy_grid_overlay.h"
 
 namespace gridcull {
 namespace {

@@ -16,9 +16,9 @@ constexpr int kFrames = 20;
 
 std::vector<nlohmann::json> cullLines(const std::string& algo) {
     const std::string out = scratchDir() + "/" + algo + ".jsonl";
-    const CommandResult r = runGridcull("cull '" + sourcePath("scenes/default.json") +
-                                        "' --algo " + algo + " --frames " +
-                                        std::to_string(kFrames) + " --out '" + out + "'");
+    const CommandResult r =
+        runGridcull("cull '" + sourcePath("scenes/default.json") + "' --algo " + algo +
+                    " --frames " + std::to_string(kFrames) + " --out '" + out + "'");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(r.out.empty()) << "with --out nothing goes to stdout";
     std::vector<nlohmann::json> lines;
@@ -74,15 +74,15 @@ TEST(CliCull, BaselinesBracketTheOracleOnTheDefaultScene) {
 }
 
 TEST(CliCull, WithoutOutWritesToStandardOutput) {
-    const CommandResult r = runGridcull("cull '" + sourcePath("scenes/default.json") +
-                                        "' --algo vfc --frames 3");
+    const CommandResult r =
+        runGridcull("cull '" + sourcePath("scenes/default.json") + "' --algo vfc --frames 3");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 3);
 }
 
 TEST(CliCull, TwoDimensionalSceneWritesTwoNumbersPerVector) {
-    const CommandResult r = runGridcull("cull '" + sourcePath("scenes/walls-2d.json") +
-                                        "' --algo exact --frames 2");
+    const CommandResult r =
+        runGridcull("cull '" + sourcePath("scenes/walls-2d.json") + "' --algo exact --frames 2");
     ASSERT_EQ(r.status, 0) << r.err;
     std::stringstream in(r.out);
     std::string line;

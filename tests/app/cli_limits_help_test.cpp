@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/oracle/exact_oracle.h"
 #include "culling/io/scene_loader.h"
+#include "culling/oracle/exact_oracle.h"
 #include "grid/regular_grid.h"
 #include "run_command.h"
 

@@ -21,7 +21,8 @@ TEST(CliShotLazy, UnknownObjectOrBadCellSizeExitTwo) {
     CommandResult r = runGridcull(shot + " --lazy-object 999999");
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_NE(r.err.find("--lazy-object 999999"), std::string::npos) << r.err;
-    for (const char* bad : {" --lazy-object -1", " --lazy-object x", " --lazy-cell-size 0", " --cell-size 16"}) {
+    for (const char* bad :
+         {" --lazy-object -1", " --lazy-object x", " --lazy-cell-size 0", " --cell-size 16"}) {
         r = runGridcull(shot + bad);
         EXPECT_EQ(r.status, 2) << bad << "\n" << r.err;
         EXPECT_FALSE(r.err.empty()) << bad;

@@ -10,8 +10,8 @@ TEST(CliUsage, VersionAndHelpExitZero) {
     CommandResult r = runGridcull("--version");
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.out.find("gridcull "), std::string::npos);
-    for (const char* cmd : {"--help", "cull --help", "bench --help", "shot --help",
-                            "view --help"}) {
+    for (const char* cmd :
+         {"--help", "cull --help", "bench --help", "shot --help", "view --help"}) {
         r = runGridcull(cmd);
         EXPECT_EQ(r.status, 0) << cmd;
         EXPECT_NE(r.out.find("usage"), std::string::npos) << cmd;
@@ -24,17 +24,23 @@ TEST(CliUsage, VersionAndHelpExitZero) {
 
 TEST(CliUsage, BadCommandLinesExitTwo) {
     const std::string scene = "'" + sourcePath("scenes/default.json") + "'";
-    const std::vector<std::string> cases = {
-         std::string("frobnicate"), "cull", "cull " + scene, "cull " + scene + " --algo nope",
-          "cull " + scene + " --algo vfc --frames 0", "cull " + scene + " --algo vfc --frames x",
-          "cull " + scene + " --algo vfc --bogus", "cull " + scene + " --algo",
-          "bench " + scene + " --algo vfc,,all", "bench " + scene + " --algo vfc --runs -1",
-          "shot " + scene + " --frame 1", "shot " + scene + " --out x.png",
-          "shot " + scene + " --frame 999999 --out x.png",
-          "cull " + scene + " --algo vfc --oracle-res 3",
-          "cull " + scene + " --algo rgvc --rgvc-validity 0",
-          "bench " + scene + " --algo rgvc --rgvc-validity nan",
-          "bench " + scene + " --algo rgvc --rgvc-grid-res 0"};
+    const std::vector<std::string> cases = {std::string("frobnicate"),
+                                            "cull",
+                                            "cull " + scene,
+                                            "cull " + scene + " --algo nope",
+                                            "cull " + scene + " --algo vfc --frames 0",
+                                            "cull " + scene + " --algo vfc --frames x",
+                                            "cull " + scene + " --algo vfc --bogus",
+                                            "cull " + scene + " --algo",
+                                            "bench " + scene + " --algo vfc,,all",
+                                            "bench " + scene + " --algo vfc --runs -1",
+                                            "shot " + scene + " --frame 1",
+                                            "shot " + scene + " --out x.png",
+                                            "shot " + scene + " --frame 999999 --out x.png",
+                                            "cull " + scene + " --algo vfc --oracle-res 3",
+                                            "cull " + scene + " --algo rgvc --rgvc-validity 0",
+                                            "bench " + scene + " --algo rgvc --rgvc-validity nan",
+                                            "bench " + scene + " --algo rgvc --rgvc-grid-res 0"};
     for (const std::string& args : cases) {
         const CommandResult r = runGridcull(args);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;

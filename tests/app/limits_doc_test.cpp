@@ -24,10 +24,10 @@ TEST(LimitsDoc, KnobTableIsTheRegistrysListing) {
 TEST(LimitsDoc, KnobsListsEveryFamilysKnobs) {
     const CommandResult r = runGridcull("knobs");
     ASSERT_EQ(r.status, 0) << r.err;
-    for (const char* flag : {"--oracle-res", "--oracle-rays", "--rgvc-validity", "--rgvc-grid-res",
-                             "--lazy-res", "--lazy-cell-size", "--lazy-prob",
-                             "--lazy-border-whole", "--lazy-large-box", "--rgvc-layer",
-                             "--rgvc-occluder", "--lazy-object"})
+    for (const char* flag :
+         {"--oracle-res", "--oracle-rays", "--rgvc-validity", "--rgvc-grid-res", "--lazy-res",
+          "--lazy-cell-size", "--lazy-prob", "--lazy-border-whole", "--lazy-large-box",
+          "--rgvc-layer", "--rgvc-occluder", "--lazy-object"})
         EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
 }
 

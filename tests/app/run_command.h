@@ -1,12 +1,12 @@
 // Runs the real gridcull executable in a shell and captures what it prints.
 #pragma once
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace gridcull::test {
 
@@ -25,8 +25,8 @@ inline std::string readWholeFile(const std::string& path) {
 
 inline std::string scratchDir() {
     const char* tmp = std::getenv("TMPDIR");
-    std::string dir = std::string(tmp ? tmp : "/tmp") + "/gridcull-test-" +
-                      std::to_string(::getpid());
+    std::string dir =
+        std::string(tmp ? tmp : "/tmp") + "/gridcull-test-" + std::to_string(::getpid());
     std::system(("mkdir -p '" + dir + "'").c_str());
     return dir;
 }

@@ -39,7 +39,8 @@ TEST(ToyFamilyCli, TheRegistryEntryBringsTheAlgorithmAndItsKnob) {
     }
     EXPECT_EQ(lines, 2u);
 
-    r = runToy("bench " + scene + " --algo toy-nearest:toy-count=2,toy-nearest:toy-count=6 "
+    r = runToy("bench " + scene +
+               " --algo toy-nearest:toy-count=2,toy-nearest:toy-count=6 "
                "--frames 3 --runs 1 --no-quality");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("toy-nearest:toy-count=2 "), std::string::npos) << r.out;

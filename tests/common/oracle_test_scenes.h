@@ -10,9 +10,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "culling/scene/camera.h"
 #include "culling/api/culler.h"
 #include "culling/registry/registry.h"
+#include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull::test {

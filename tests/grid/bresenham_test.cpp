@@ -66,7 +66,8 @@ TEST(BresenhamCircle4, ClosedFourConnectedSimpleAndNearTheRadius) {
             const int64_t rr = int64_t(r) * r, d2 = a.x * a.x + a.y * a.y;
             if (r > 0) {
                 // 4-connected: consecutive voxels share an edge, the last with the first.
-                ASSERT_EQ(std::llabs(a.x - b.x) + std::llabs(a.y - b.y), 1) << "r " << r << " i " << i;
+                ASSERT_EQ(std::llabs(a.x - b.x) + std::llabs(a.y - b.y), 1)
+                    << "r " << r << " i " << i;
                 ASSERT_GT(d2, (r - 1) * (r - 1)) << "r " << r;
                 ASSERT_LE(d2, rr + 2 * r + 1) << "r " << r;
             }

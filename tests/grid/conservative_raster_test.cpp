@@ -57,11 +57,13 @@ void checkConservative(const RegularGrid& grid, const VoxelSet& touched, const V
                     << "opaque voxel " << v.first << "," << v.second << " not inside";
     }
     for (int s = 0; s < 4000; ++s) {
-        const glm::dvec3 p{rng.uniform(bounds.min.x, bounds.max.x), rng.uniform(bounds.min.y, bounds.max.y), 0};
+        const glm::dvec3 p{rng.uniform(bounds.min.x, bounds.max.x),
+                           rng.uniform(bounds.min.y, bounds.max.y), 0};
         if (!contains(p)) continue;
         const glm::ivec3 v = grid.voxelOf(p);
         if (!grid.inside(v)) continue;
-        ASSERT_TRUE(touched.count({v.x, v.y})) << "point in shape, voxel " << v.x << "," << v.y << " not spanned";
+        ASSERT_TRUE(touched.count({v.x, v.y}))
+            << "point in shape, voxel " << v.x << "," << v.y << " not spanned";
     }
 }
 
@@ -74,7 +76,8 @@ TEST(ConservativeRaster, CirclesAreExact) {
                            grid.world.min.y + rng.uniform(-0.2, 1.2) * e.y, 0};
         const double r = rng.uniform(0.05, 0.4) * std::min(e.x, e.y);
         VoxelSet touched, inside;
-        collect([&](auto&& t, auto&& in) { rasterizeCircle(grid, c, r, t, in); }, grid, touched, inside);
+        collect([&](auto&& t, auto&& in) { rasterizeCircle(grid, c, r, t, in); }, grid, touched,
+                inside);
         for (int y = 0; y < grid.resolution.y; ++y) {
             for (int x = 0; x < grid.resolution.x; ++x) {
                 const Aabb b = grid.voxelBounds({x, y, 0});
@@ -86,15 +89,18 @@ TEST(ConservativeRaster, CirclesAreExact) {
                 const double far = std::hypot(fx, fy);
                 const double tol = 1e-7 * r;
                 if (std::abs(near - r) > tol) {
-                    ASSERT_EQ(touched.count({x, y}) == 1, near < r) << "trial " << trial << " voxel " << x << "," << y;
+                    ASSERT_EQ(touched.count({x, y}) == 1, near < r)
+                        << "trial " << trial << " voxel " << x << "," << y;
                 }
                 if (std::abs(far - r) > tol) {
-                    ASSERT_EQ(inside.count({x, y}) == 1, far < r) << "trial " << trial << " voxel " << x << "," << y;
+                    ASSERT_EQ(inside.count({x, y}) == 1, far < r)
+                        << "trial " << trial << " voxel " << x << "," << y;
                 }
             }
         }
-        checkConservative(grid, touched, inside, Aabb{c - glm::dvec3(r, r, 0), c + glm::dvec3(r, r, 0)},
-                          [&](const glm::dvec3& p) { return std::hypot(p.x - c.x, p.y - c.y) <= r; }, rng);
+        checkConservative(
+            grid, touched, inside, Aabb{c - glm::dvec3(r, r, 0), c + glm::dvec3(r, r, 0)},
+            [&](const glm::dvec3& p) { return std::hypot(p.x - c.x, p.y - c.y) <= r; }, rng);
     }
 }
 
@@ -105,18 +111,24 @@ TEST(ConservativeRaster, BoxesAreExact) {
         const glm::dvec3 e = grid.world.extent(), d = grid.voxelSize();
         glm::dvec3 lo{grid.world.min.x + rng.uniform(-0.2, 1.0) * e.x,
                       grid.world.min.y + rng.uniform(-0.2, 1.0) * e.y, 0};
-        glm::dvec3 hi = lo + glm::dvec3(rng.uniform(0.01, 0.5) * e.x, rng.uniform(0.01, 0.5) * e.y, 0);
+        glm::dvec3 hi =
+            lo + glm::dvec3(rng.uniform(0.01, 0.5) * e.x, rng.uniform(0.01, 0.5) * e.y, 0);
         if (trial % 3 == 0) {
             // Snap to voxel boundaries: the edge cases of "touch" and "inside".
             lo.x = grid.world.min.x + std::round((lo.x - grid.world.min.x) / d.x) * d.x;
             hi.y = grid.world.min.y + std::round((hi.y - grid.world.min.y) / d.y) * d.y + d.y;
         }
         VoxelSet touched, inside;
-        collect([&](auto&& t, auto&& in) { rasterizeBox(grid, Aabb{lo, hi}, t, in); }, grid, touched, inside);
+        collect(
+            [&](auto&& t, auto&& in) {
+                rasterizeBox(grid, Aabb{lo, hi}, t, in);
+            },
+            grid, touched, inside);
         for (int y = 0; y < grid.resolution.y; ++y) {
             for (int x = 0; x < grid.resolution.x; ++x) {
                 const Aabb b = grid.voxelBounds({x, y, 0});
-                const bool meets = b.min.x <= hi.x && b.max.x >= lo.x && b.min.y <= hi.y && b.max.y >= lo.y;
+                const bool meets =
+                    b.min.x <= hi.x && b.max.x >= lo.x && b.min.y <= hi.y && b.max.y >= lo.y;
                 const double snap = kOpaqueSnap * std::max(d.x, d.y) * 2;
                 const bool within = b.min.x >= lo.x - snap && b.max.x <= hi.x + snap &&
                                     b.min.y >= lo.y - snap && b.max.y <= hi.y + snap;
@@ -156,12 +168,16 @@ TEST(ConservativeRaster, PolygonsConvexAndConcave) {
         std::vector<glm::dvec3> points;
         for (int k = 0; k < corners; ++k) {
             const double angle = (k + rng.uniform(0.0, 0.8)) * 6.283185307179586 / corners;
-            points.push_back(c + glm::dvec3(std::cos(angle), std::sin(angle), 0) * (reach * rng.uniform(0.2, 1.0)));
+            points.push_back(c + glm::dvec3(std::cos(angle), std::sin(angle), 0) *
+                                     (reach * rng.uniform(0.2, 1.0)));
         }
         const glm::dvec3 shift{rng.uniform(-3, 3), rng.uniform(-3, 3), 0};
         VoxelSet touched, inside;
-        collect([&](auto&& t, auto&& in) { rasterizePolygon(grid, points.data(), points.size(), shift, t, in); },
-                grid, touched, inside);
+        collect(
+            [&](auto&& t, auto&& in) {
+                rasterizePolygon(grid, points.data(), points.size(), shift, t, in);
+            },
+            grid, touched, inside);
         Aabb bounds{points[0] + shift, points[0] + shift};
         for (const glm::dvec3& p : points) bounds.merge(Aabb{p + shift, p + shift});
         auto contains = [&](const glm::dvec3& p) {
@@ -171,7 +187,8 @@ TEST(ConservativeRaster, PolygonsConvexAndConcave) {
         // The polygon's corners and edge points are spanned too.
         for (size_t i = 0; i < points.size(); ++i) {
             for (int s = 0; s <= 10; ++s) {
-                const glm::dvec3 p = points[i] + (points[(i + 1) % points.size()] - points[i]) * (s / 10.0) + shift;
+                const glm::dvec3 p =
+                    points[i] + (points[(i + 1) % points.size()] - points[i]) * (s / 10.0) + shift;
                 const glm::ivec3 v = grid.voxelOf(p);
                 if (grid.inside(v)) {
                     ASSERT_TRUE(touched.count({v.x, v.y})) << "trial " << trial;

@@ -36,14 +36,16 @@ TEST(PolygonRaster, SamplesExactlyTheIntegerPointsInside) {
         rasterizeConvexAtCentres(planes.data(), int(planes.size()), 0, 39, 0, 39,
                                  [&](int y, int x0, int x1) {
                                      ASSERT_LE(x0, x1);
-                                     for (int x = x0; x <= x1; ++x) ASSERT_TRUE(got.insert({x, y}).second);
+                                     for (int x = x0; x <= x1; ++x)
+                                         ASSERT_TRUE(got.insert({x, y}).second);
                                  });
         for (int y = 0; y < 40; ++y) {
             for (int x = 0; x < 40; ++x) {
                 double worst = 1e300;
                 for (const HalfPlane2& p : planes) worst = std::min(worst, p.eval(x, y));
                 if (std::abs(worst) < 1e-9) continue;  // on an edge: either way
-                ASSERT_EQ(got.count({x, y}) == 1, worst > 0.0) << "trial " << trial << " at " << x << "," << y;
+                ASSERT_EQ(got.count({x, y}) == 1, worst > 0.0)
+                    << "trial " << trial << " at " << x << "," << y;
             }
         }
     }
@@ -66,7 +68,8 @@ TEST(PolygonRaster, WholeVoxelsOnlyMarksExactlyTheVoxelsInside) {
                 double worst = 1e300;
                 for (const HalfPlane2& p : planes)
                     for (int c = 0; c < 4; ++c)
-                        worst = std::min(worst, p.eval(x + ((c & 1) ? 0.5 : -0.5), y + ((c & 2) ? 0.5 : -0.5)));
+                        worst = std::min(
+                            worst, p.eval(x + ((c & 1) ? 0.5 : -0.5), y + ((c & 2) ? 0.5 : -0.5)));
                 if (got.count({x, y})) {
                     ASSERT_GE(worst, 0.0) << "voxel " << x << "," << y << " marked but not inside";
                 } else if (worst > 1e-6) {

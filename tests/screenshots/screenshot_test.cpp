@@ -37,7 +37,9 @@ struct ShotCase {
 constexpr const char* kViaToy = "via:gridcull-toy";
 
 // gtest names cases by this instead of dumping their bytes.
-void PrintTo(const ShotCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ShotCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 std::vector<ShotCase> loadCases() {
     std::vector<ShotCase> cases;
@@ -60,7 +62,9 @@ std::vector<ShotCase> loadCases() {
     return cases;
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) {
+    return "'" + s + "'";
+}
 
 // Runs the shot; returns the exit status and fills `log` with its output.
 int runShot(const ShotCase& c, const std::string& out_png, std::string& log) {
@@ -70,11 +74,10 @@ int runShot(const ShotCase& c, const std::string& out_png, std::string& log) {
     std::string command = std::string("LIBGL_ALWAYS_SOFTWARE=1 ");
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) command += "xvfb-run -a -s '-screen 0 1280x720x24' ";
-    command += quoted(c.exe) + " shot " + quoted((source / c.scene).string()) +
-               " --frame " + std::to_string(c.frame) + " --view " + c.view + " --algo " +
-               c.algo + " --width " + std::to_string(c.width) + " --height " +
-               std::to_string(c.height) + " " + c.extra + " --out " + quoted(out_png) + " > " +
-               quoted(log_path) + " 2>&1";
+    command += quoted(c.exe) + " shot " + quoted((source / c.scene).string()) + " --frame " +
+               std::to_string(c.frame) + " --view " + c.view + " --algo " + c.algo + " --width " +
+               std::to_string(c.width) + " --height " + std::to_string(c.height) + " " + c.extra +
+               " --out " + quoted(out_png) + " > " + quoted(log_path) + " 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(log_path);
     std::stringstream text;
@@ -121,15 +124,16 @@ TEST_P(ScreenshotTest, MatchesGolden) {
     }
     fs::copy_file(golden_path, expected_copy, fs::copy_options::overwrite_existing);
     if (diff.same_size) writePng(diff_path, diff.diff);
-    ADD_FAILURE() << c.name << ": "
-                  << (diff.same_size ? std::to_string(diff.failing_pixels) + " of " +
-                                           std::to_string(pixels) + " pixels differ by more than " +
-                                           std::to_string(kChannelTolerance) + "/255 (max " +
-                                           std::to_string(diff.max_channel_difference) + ")"
-                                     : std::string("image sizes differ"))
-                  << "\n  actual:   " << actual_path << "\n  expected: " << expected_copy
-                  << "\n  diff:     " << diff_path
-                  << "\n  if the change is intended, look at it, then run scripts/update-goldens.sh";
+    ADD_FAILURE()
+        << c.name << ": "
+        << (diff.same_size
+                ? std::to_string(diff.failing_pixels) + " of " + std::to_string(pixels) +
+                      " pixels differ by more than " + std::to_string(kChannelTolerance) +
+                      "/255 (max " + std::to_string(diff.max_channel_difference) + ")"
+                : std::string("image sizes differ"))
+        << "\n  actual:   " << actual_path << "\n  expected: " << expected_copy
+        << "\n  diff:     " << diff_path
+        << "\n  if the change is intended, look at it, then run scripts/update-goldens.sh";
 }
 
 std::string caseName(const ::testing::TestParamInfo<ShotCase>& info) {

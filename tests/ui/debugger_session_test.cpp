@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "ui/object_states.h"
 #include "culling/io/scene_loader.h"
+#include "ui/object_states.h"
 
 namespace gridcull {
 namespace {

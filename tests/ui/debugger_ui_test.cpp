@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
-#include "ui/debugger_session.h"
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
 #include "tests/ui/session_frame_snapshot.h"
+#include "ui/debugger_session.h"
 
 namespace gridcull {
 namespace {

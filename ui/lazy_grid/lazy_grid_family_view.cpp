@@ -16,8 +16,8 @@ struct LazyGridViewFlags {
 
 const KnobTable<LazyGridViewFlags>& lazyGridViewFlags() {
     static const KnobTable<LazyGridViewFlags> table{
-        derivedKnob("lazy-object", &LazyGridViewFlags::object, 0,
-                    std::numeric_limits<int>::max(), "none", "none",
+        derivedKnob("lazy-object", &LazyGridViewFlags::object, 0, std::numeric_limits<int>::max(),
+                    "none", "none",
                     "pick the object with scene id N, as a click in the window does: the cells "
                     "its deciding test touched and its screen rectangle over the view through "
                     "the culling camera, the step that decided it in the panel"),

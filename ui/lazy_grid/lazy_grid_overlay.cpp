@@ -117,8 +117,8 @@ void collectTouched(const LazyGridSnapshot& s, const LazyGridTest& test,
     }
 }
 
-void drawTouched(const LazyGridSnapshot& s, const LazyGridViewState& view,
-                 const ImageFrame& frame, const LazyGridOverlayScratch& scratch, DebugDraw& draw) {
+void drawTouched(const LazyGridSnapshot& s, const LazyGridViewState& view, const ImageFrame& frame,
+                 const LazyGridOverlayScratch& scratch, DebugDraw& draw) {
     const Paint white{lazyGridLayerSwatch(LazyGridLayer::Touched)};
     const Paint free{lazyFreeTouchSwatch()};
     const Paint query{lazyGridLayerSwatch(LazyGridLayer::PixelQueries)};

@@ -45,8 +45,7 @@ int log2Floor(int v) {
 
 // Powers of two only: each change re-runs every frame so far, and the paper's
 // 32 sits in the middle.
-void cellSizeSlider(const LazyGridSnapshot& lazy, LazyGridPanelState& state,
-                    FamilyAction& action) {
+void cellSizeSlider(const LazyGridSnapshot& lazy, LazyGridPanelState& state, FamilyAction& action) {
     if (!state.dragging)
         state.cell_size_log2 =
             std::clamp(log2Floor(lazy.cell_size), kLazyCellSizeMinLog2, kLazyCellSizeMaxLog2);

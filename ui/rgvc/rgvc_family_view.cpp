@@ -65,7 +65,8 @@ public:
 
 private:
     static const RgvcSnapshot* snapshotOf(const FamilyViewContext& context) {
-        const RgvcSnapshot* rgvc = context.snapshot ? context.snapshot->as<RgvcSnapshot>() : nullptr;
+        const RgvcSnapshot* rgvc =
+            context.snapshot ? context.snapshot->as<RgvcSnapshot>() : nullptr;
         return rgvc && rgvc->valid ? rgvc : nullptr;
     }
 

@@ -9,10 +9,10 @@ namespace gridcull {
 
 namespace {
 
-constexpr float kThinWidth = kFineLine;   // line of sight
+constexpr float kThinWidth = kFineLine;    // line of sight
 constexpr float kThickWidth = kHeavyLine;  // the seed box, the picked occluder and its polygons
-constexpr double kIdMarkFraction = 0.5;  // side of an I mark, in voxels
-constexpr int kDashes = 120;             // over the line of sight's length
+constexpr double kIdMarkFraction = 0.5;    // side of an I mark, in voxels
+constexpr int kDashes = 120;               // over the line of sight's length
 
 // Mask values of the traversal: what the voxel's visit looks like.
 constexpr uint8_t kMaskNone = 0, kMaskVisited = 1, kMaskCurrent = 2;
@@ -31,8 +31,8 @@ void fillVoxels(DebugDraw& draw, const VoxelSpace& s, double x0, double y0, doub
     draw.fillRect(DrawSpace::World, s.x(x0), s.y(y0), s.x(x1), s.y(y1), paint);
 }
 
-void outlineVoxels(DebugDraw& draw, const VoxelSpace& s, double x0, double y0, double x1,
-                   double y1, Paint paint) {
+void outlineVoxels(DebugDraw& draw, const VoxelSpace& s, double x0, double y0, double x1, double y1,
+                   Paint paint) {
     draw.outlineRect(DrawSpace::World, s.x(x0), s.y(y0), s.x(x1), s.y(y1), paint, kThickWidth);
 }
 

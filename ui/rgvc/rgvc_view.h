@@ -36,7 +36,9 @@ const char* rgvcLayerMeaning(RgvcLayer layer);
 Swatch rgvcLayerSwatch(RgvcLayer layer);
 // Opacity the overlay draws the layer's fill with (O and H are veils over the objects).
 float rgvcLayerAlpha(RgvcLayer layer);
-inline Paint rgvcLayerPaint(RgvcLayer layer) { return {rgvcLayerSwatch(layer), rgvcLayerAlpha(layer)}; }
+inline Paint rgvcLayerPaint(RgvcLayer layer) {
+    return {rgvcLayerSwatch(layer), rgvcLayerAlpha(layer)};
+}
 
 struct RgvcViewState {
     bool show[kRgvcLayerCount] = {true, true, true, true, true, true, true, true, true, true};

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <imgui.h>
+#include <glm/geometric.hpp>
 
 #include "culling/registry/registry.h"
 #include "ui/registry/family_views.h"
@@ -55,7 +55,8 @@ public:
         const size_t kept = std::min(order_.size(), size_t(std::max(options_.count, 0)));
         std::partial_sort(order_.begin(), order_.begin() + std::ptrdiff_t(kept), order_.end());
         order_.resize(kept);
-        for (const auto& [distance, index] : order_) out.pvs.push_back(scene.objects[size_t(index)].id);
+        for (const auto& [distance, index] : order_)
+            out.pvs.push_back(scene.objects[size_t(index)].id);
         std::sort(out.pvs.begin(), out.pvs.end());
         out.stats.set(Counter::ObjectsTested, int64_t(scene.objects.size()));
         snapshot_.valid = capture_;
@@ -110,8 +111,8 @@ public:
 
     void drawPanel(const FamilyViewContext& context, FamilyAction& action) override {
         const ToySnapshot* toy = snapshotOf(context);
-        if (!toy || !ImGui::CollapsingHeader("Toy family (tests only)",
-                                             ImGuiTreeNodeFlags_DefaultOpen))
+        if (!toy ||
+            !ImGui::CollapsingHeader("Toy family (tests only)", ImGuiTreeNodeFlags_DefaultOpen))
             return;
         ImGui::Text("kept %zu nearest of %zu objects", toy->kept.size(),
                     context.scene->objects.size());
@@ -141,8 +142,8 @@ public:
             }
             draw.line(DrawSpace::World, toy->eye, p, {Swatch::Yellow, 0.8f}, kBoldLine);
         }
-        const glm::dvec3 corners[4] = {{lo.x, lo.y, 0}, {hi.x, lo.y, 0}, {hi.x, hi.y, 0},
-                                       {lo.x, hi.y, 0}};
+        const glm::dvec3 corners[4] = {
+            {lo.x, lo.y, 0}, {hi.x, lo.y, 0}, {hi.x, hi.y, 0}, {lo.x, hi.y, 0}};
         draw.fillConvexPolygon(DrawSpace::World, corners, 4, {Swatch::Orange, 0.15f});
         draw.outlinePolygon(DrawSpace::World, corners, 4, {Swatch::Orange}, kFineLine);
         draw.dashedRect(DrawSpace::World, lo.x - 2, lo.y - 2, hi.x + 2, hi.y + 2, {Swatch::White},
@@ -170,7 +171,8 @@ public:
         cells.image_height = 1;
         for (int k = 0; k < cells.image_width; ++k) {
             const ViewRect r = cells.pixelsToView(PixelRect{k, 0, k, 0});
-            draw.outlineRect({r.x0 + 3, r.y0 + 3, r.x1 - 3, r.y1 - 3}, {Swatch::SkyBlue}, kBoldLine);
+            draw.outlineRect({r.x0 + 3, r.y0 + 3, r.x1 - 3, r.y1 - 3}, {Swatch::SkyBlue},
+                             kBoldLine);
         }
         draw.outlineRect(key, {Swatch::White}, kHeavyLine);
         draw.text(DrawSpace::View, {key.x0, key.y1 + 6.0, 0.0}, "toy-nearest", {Swatch::Yellow});

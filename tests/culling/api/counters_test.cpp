@@ -16,9 +16,9 @@ namespace {
 TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
     // The names of `cull`'s JSON and bench's CSV: changing one breaks readers.
     const std::vector<std::string> expected = {
-        "voxels_visited", "tbv_created",    "tbv_expired",     "tbv_revealed",
-        "object_updates", "pixel_queries",  "nodes_visited",   "triangles_drawn",
-        "objects_tested", "pixels_sampled", "occlusion_tests", "pixels_read",
+        "voxels_visited", "tbv_created",    "tbv_expired",      "tbv_revealed",
+        "object_updates", "pixel_queries",  "nodes_visited",    "triangles_drawn",
+        "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
         "cell_updates",   "bvh_rebuilds",   "probability_skips"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;

@@ -65,8 +65,9 @@ TEST(Knobs, ParsingChecksKindAndRangeAndSaysWhatWasExpected) {
     EXPECT_EQ(v, 0.1);
     for (const char* bad : {"0", "1025", "1.5", "", "8x", "nan", "-3"}) {
         EXPECT_FALSE(parseKnobValue(cells, bad, v, error)) << bad;
-        EXPECT_EQ(error, std::string("option --toy-cells: expected an integer from 1 to 1024, got '") +
-                             bad + "'");
+        EXPECT_EQ(error,
+                  std::string("option --toy-cells: expected an integer from 1 to 1024, got '") +
+                      bad + "'");
     }
     for (const char* bad : {"nan", "inf", "1.0001", "-0.1", "1e999", "0.5.5"}) {
         EXPECT_FALSE(parseKnobValue(fraction, bad, v, error)) << bad;

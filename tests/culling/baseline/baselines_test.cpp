@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/baseline/all_culler.h"
 #include "culling/api/culler.h"
+#include "culling/baseline/all_culler.h"
 #include "culling/registry/registry.h"
 #include "tests/common/oracle_test_scenes.h"
 

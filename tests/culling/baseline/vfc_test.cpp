@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 #include <glm/trigonometric.hpp>
 
-#include "culling/oracle/exact_oracle.h"
 #include "culling/baseline/frustum_tests.h"
 #include "culling/baseline/vfc_culler.h"
+#include "culling/oracle/exact_oracle.h"
 #include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull {

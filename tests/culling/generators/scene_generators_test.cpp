@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "culling/io/scene_loader.h"
 
@@ -18,16 +18,14 @@ std::string sourcePath(const std::string& relative) {
 
 Scene load(int dimensions, const std::string& generators, const std::string& objects = "",
            uint64_t seed = 1, const std::string& base_dir = "") {
-    const std::string world = dimensions == 3
-                                  ? R"({"min": [0, 0, 0], "max": [100, 40, 100]})"
-                                  : R"({"min": [0, 0], "max": [100, 100]})";
+    const std::string world = dimensions == 3 ? R"({"min": [0, 0, 0], "max": [100, 40, 100]})"
+                                              : R"({"min": [0, 0], "max": [100, 100]})";
     const std::string eye = dimensions == 3 ? "[1, 1, 1]" : "[1, 1]";
-    const std::string text = R"({"format": "gridcull-scene/1", "dimensions": )" +
-                             std::to_string(dimensions) + R"(, "world": )" + world +
-                             R"(, "seed": )" + std::to_string(seed) +
-                             R"(, "camera": {"path": [{"t": 0, "position": )" + eye +
-                             R"(, "target": )" + eye + R"(}]}, "objects": [)" + objects +
-                             R"(], "generators": [)" + generators + "]}";
+    const std::string text =
+        R"({"format": "gridcull-scene/1", "dimensions": )" + std::to_string(dimensions) +
+        R"(, "world": )" + world + R"(, "seed": )" + std::to_string(seed) +
+        R"(, "camera": {"path": [{"t": 0, "position": )" + eye + R"(, "target": )" + eye +
+        R"(}]}, "objects": [)" + objects + R"(], "generators": [)" + generators + "]}";
     SceneLoadResult r = loadSceneText(text, "gen.json", base_dir);
     EXPECT_TRUE(r.errors.empty()) << (r.errors.empty() ? "" : r.errors[0]);
     return r.scene ? *r.scene : Scene{};

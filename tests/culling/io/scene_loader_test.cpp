@@ -98,14 +98,17 @@ TEST(SceneLoader, ParseErrorsGiveLineAndColumn) {
     EXPECT_EQ(r.errors[0].rfind("x.json:3:5: parse error in a[2]: ", 0), 0u) << r.errors[0];
     r = loadSceneText("{\"format\": 1e400}", "y.json", "");
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].rfind("y.json:1:12: parse error in format: number 1e400 is out of range", 0), 0u)
+    EXPECT_EQ(
+        r.errors[0].rfind("y.json:1:12: parse error in format: number 1e400 is out of range", 0),
+        0u)
         << r.errors[0];
 }
 
 TEST(SceneLoader, CapsTheNumberOfMessages) {
     std::string objects;
     for (int i = 0; i < 500; ++i)
-        objects += std::string(i ? "," : "") + R"({"shape": "sphere", "center": [1, 1, 1], "radius": -1})";
+        objects +=
+            std::string(i ? "," : "") + R"({"shape": "sphere", "center": [1, 1, 1], "radius": -1})";
     const SceneLoadResult r = loadSceneText(scene3d(objects), "many.json", "");
     ASSERT_EQ(r.errors.size(), 201u);
     EXPECT_EQ(r.errors.back(), "many.json: 300 more problems not shown");
@@ -288,9 +291,8 @@ TEST(SceneLoader, AcceptsExtremesInsideTheLimits) {
         {"shape": "sphere", "center": [-9999990, 5, 5], "radius": 5},
         {"shape": "box", "min": [90, 50, 90], "max": [200, 70, 200]})"));
     EXPECT_EQ(s.objects.size(), 2u);
-    const SceneLoadResult big =
-        loadSceneText(scene3d(R"({"shape": "sphere", "center": [10000001, 5, 5], "radius": 1})"),
-                      "big.json", "");
+    const SceneLoadResult big = loadSceneText(
+        scene3d(R"({"shape": "sphere", "center": [10000001, 5, 5], "radius": 1})"), "big.json", "");
     EXPECT_FALSE(big.scene.has_value());
 }
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "culling/io/mesh_loader.h"
 #include "culling/io/scene_loader.h"
@@ -106,8 +106,10 @@ TEST(SceneMesh, SceneMeshesArePlacedScaledRotatedAndShared) {
     EXPECT_EQ(big.mesh->file, "meshes/bunny.obj");
     EXPECT_EQ(big.anchor, glm::dvec3(40, 0, 40));
     for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_NEAR(big.bounds.min[axis], big.anchor[axis] + 1.5 * kBunnyMin[axis], kFloatTolerance);
-        EXPECT_NEAR(big.bounds.max[axis], big.anchor[axis] + 1.5 * kBunnyMax[axis], kFloatTolerance);
+        EXPECT_NEAR(big.bounds.min[axis], big.anchor[axis] + 1.5 * kBunnyMin[axis],
+                    kFloatTolerance);
+        EXPECT_NEAR(big.bounds.max[axis], big.anchor[axis] + 1.5 * kBunnyMax[axis],
+                    kFloatTolerance);
     }
     // 90 degrees about y maps (x, z) to (z, -x).
     EXPECT_NEAR(turned.bounds.min.x - turned.anchor.x, kBunnyMin.z, kFloatTolerance);

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "culling/lazy_grid/bounding_volume_hierarchy.h"
-#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 #include "tests/common/test_seeds.h"
+#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 
 namespace gridcull {
 namespace {

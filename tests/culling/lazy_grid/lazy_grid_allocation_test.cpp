@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "culling/api/culler.h"
-#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 #include "tests/common/oracle_test_scenes.h"
+#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 
 // GCC 12 flags free() of operator new's memory once it inlines the pair; here
 // both sides are ours and use malloc / free.

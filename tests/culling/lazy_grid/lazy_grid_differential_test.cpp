@@ -1,8 +1,8 @@
 // The lazy occlusion grid cullers against the exact oracle: 0 false culls for
 // both variants over at least 500 seeded random scenes x 20 frames. The oracle
 // samples the same image (--lazy-res = --oracle-res), which is what the lazy
-// grid promises to be conservative for (culling/lazy_grid/lazy_grid_culler.h). Every PVS must also be sorted, unique and
-// within vfc's (the traversal culls by the same frustum test).
+// grid promises to be conservative for (culling/lazy_grid/lazy_grid_culler.h). Every PVS must also
+// be sorted, unique and within vfc's (the traversal culls by the same frustum test).
 //
 // Accepted over-estimation, written down: the PVS may hold objects hidden from
 // every pixel centre (boxes stand for spheres and meshes; a box is "visible" when

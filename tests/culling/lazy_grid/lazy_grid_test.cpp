@@ -12,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/raster/id_depth_buffer.h"
 #include "culling/lazy_grid/lazy_grid.h"
-#include "culling/raster/software_image_target.h"
+#include "culling/raster/id_depth_buffer.h"
 #include "culling/raster/occlusion_buffer.h"
+#include "culling/raster/software_image_target.h"
 #include "culling/scene/seeded_random.h"
 #include "tests/common/test_seeds.h"
 

@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "culling/lazy_grid/lazy_grid_culler.h"
-#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 #include "tests/common/test_seeds.h"
+#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 
 namespace gridcull {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/oracle/exact_oracle.h"
 #include "culling/baseline/vfc_culler.h"
+#include "culling/oracle/exact_oracle.h"
 #include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull {

@@ -15,8 +15,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "culling/scene/camera.h"
 #include "culling/oracle/exact_oracle.h"
+#include "culling/scene/camera.h"
 #include "culling/scene/ray_intersect.h"
 
 namespace gridcull::test {

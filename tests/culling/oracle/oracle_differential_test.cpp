@@ -20,9 +20,9 @@
 
 #include "culling/oracle/exact_oracle.h"
 #include "culling/scene/seeded_random.h"
-#include "tests/culling/oracle/oracle_brute_force.h"
 #include "tests/common/oracle_test_scenes.h"
 #include "tests/common/test_seeds.h"
+#include "tests/culling/oracle/oracle_brute_force.h"
 
 namespace gridcull {
 namespace {
@@ -106,47 +106,49 @@ TEST(OracleDifferential, VfcContainsExactAndAllIsEveryId) {
     auto vfc = test::makeOrDie("vfc");
     auto all = test::makeOrDie("all");
     FrameResult exact_out, vfc_out, all_out;
-    for (const uint64_t seed : test::seedsToRun(0, kSceneCount)) test::withSeed(seed, [&] {
-        const Scene scene = randomScene(seed);
-        V ids;
-        for (const SceneObject& o : scene.objects) ids.push_back(o.id);
-        std::sort(ids.begin(), ids.end());
-        exact.reset(scene);
-        vfc->reset(scene);
-        all->reset(scene);
-        for (const double t : kFrameTimes) {
-            SCOPED_TRACE("t " + std::to_string(t));
-            const Camera camera = cameraAt(scene, t);
-            exact.cull(scene, camera, t, exact_out);
-            vfc->cull(scene, camera, t, vfc_out);
-            all->cull(scene, camera, t, all_out);
-            ASSERT_TRUE(sortedUnique(exact_out.pvs));
-            ASSERT_TRUE(sortedUnique(vfc_out.pvs));
-            ASSERT_EQ(all_out.pvs, ids);
-            ASSERT_TRUE(test::isSubset(exact_out.pvs, vfc_out.pvs));
-            ASSERT_TRUE(test::isSubset(vfc_out.pvs, ids));
-        }
-    });
+    for (const uint64_t seed : test::seedsToRun(0, kSceneCount))
+        test::withSeed(seed, [&] {
+            const Scene scene = randomScene(seed);
+            V ids;
+            for (const SceneObject& o : scene.objects) ids.push_back(o.id);
+            std::sort(ids.begin(), ids.end());
+            exact.reset(scene);
+            vfc->reset(scene);
+            all->reset(scene);
+            for (const double t : kFrameTimes) {
+                SCOPED_TRACE("t " + std::to_string(t));
+                const Camera camera = cameraAt(scene, t);
+                exact.cull(scene, camera, t, exact_out);
+                vfc->cull(scene, camera, t, vfc_out);
+                all->cull(scene, camera, t, all_out);
+                ASSERT_TRUE(sortedUnique(exact_out.pvs));
+                ASSERT_TRUE(sortedUnique(vfc_out.pvs));
+                ASSERT_EQ(all_out.pvs, ids);
+                ASSERT_TRUE(test::isSubset(exact_out.pvs, vfc_out.pvs));
+                ASSERT_TRUE(test::isSubset(vfc_out.pvs, ids));
+            }
+        });
 }
 
 TEST(OracleDifferential, ExactEqualsBruteForceRayCasting) {
     OracleOptions options;
-    options.resolution = 160;      // 160 x (160 / aspect) rays per 3D frame
+    options.resolution = 160;       // 160 x (160 / aspect) rays per 3D frame
     options.rays_per_turn = 16384;  // the default in 2D
     ExactOracle exact{options};
     FrameResult out;
     int compared_ids = 0;
-    for (const uint64_t seed : test::seedsToRun(0, kSceneCount)) test::withSeed(seed, [&] {
-        const Scene scene = randomScene(seed);
-        exact.reset(scene);
-        const double t = kFrameTimes[seed % 3];
-        exact.cull(scene, cameraAt(scene, t), t, out);
-        const test::Reference ref = test::bruteForce(scene, t, options);
-        const std::set<int> got(out.pvs.begin(), out.pvs.end());
-        for (const int id : ref.required) EXPECT_TRUE(got.count(id)) << "missed id " << id;
-        for (const int id : got) EXPECT_TRUE(ref.allowed.count(id)) << "extra id " << id;
-        compared_ids += int(got.size());
-    });
+    for (const uint64_t seed : test::seedsToRun(0, kSceneCount))
+        test::withSeed(seed, [&] {
+            const Scene scene = randomScene(seed);
+            exact.reset(scene);
+            const double t = kFrameTimes[seed % 3];
+            exact.cull(scene, cameraAt(scene, t), t, out);
+            const test::Reference ref = test::bruteForce(scene, t, options);
+            const std::set<int> got(out.pvs.begin(), out.pvs.end());
+            for (const int id : ref.required) EXPECT_TRUE(got.count(id)) << "missed id " << id;
+            for (const int id : got) EXPECT_TRUE(ref.allowed.count(id)) << "extra id " << id;
+            compared_ids += int(got.size());
+        });
     // The random scenes must actually show things, or the comparison proves little.
     if (!test::singleSeedRun()) {
         EXPECT_GT(compared_ids, kSceneCount);

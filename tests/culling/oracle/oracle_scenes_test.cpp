@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/oracle/exact_oracle.h"
 #include "culling/io/scene_loader.h"
-#include "tests/culling/oracle/oracle_brute_force.h"
+#include "culling/oracle/exact_oracle.h"
 #include "tests/common/oracle_test_scenes.h"
+#include "tests/culling/oracle/oracle_brute_force.h"
 
 namespace gridcull {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "culling/raster/screen_mapping.h"
 #include "culling/scene/ray_intersect.h"
-#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 #include "tests/common/test_seeds.h"
+#include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
 
 namespace gridcull {
 namespace {

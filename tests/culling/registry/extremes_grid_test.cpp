@@ -15,9 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include "grid/regular_grid.h"
 #include "tests/culling/registry/extremes_harness.h"
 #include "tests/culling/registry/extremes_scenes.h"
-#include "grid/regular_grid.h"
 
 namespace gridcull {
 namespace {

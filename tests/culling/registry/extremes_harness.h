@@ -35,9 +35,9 @@
 #include <gtest/gtest.h>
 
 #include "culling/api/culler.h"
-#include "culling/registry/registry.h"
-#include "culling/oracle/exact_oracle.h"
 #include "culling/io/scene_loader.h"
+#include "culling/oracle/exact_oracle.h"
+#include "culling/registry/registry.h"
 #include "tests/common/oracle_test_scenes.h"
 #include "tests/common/test_seeds.h"
 

@@ -149,7 +149,8 @@ TEST(ExtremesMonotonic, OracleIsMonotoneAndCullersAreMeasured) {
         const Tally& t = tallies[name];
         std::printf("[monotonic] %s | adding: %d of %d monotone | removing: %d of %d monotone",
                     name.c_str(), t.add_monotone, t.add_trials, t.remove_monotone, t.remove_trials);
-        if (t.skipped > 0) std::printf(" | skipped on %d scenes (not offered for its dimension)", t.skipped);
+        if (t.skipped > 0)
+            std::printf(" | skipped on %d scenes (not offered for its dimension)", t.skipped);
         std::printf("\n");
     }
     std::printf("[monotonic] the added occluder hid something from the oracle in %d trials\n",

@@ -17,7 +17,7 @@ namespace {
 TEST(Registry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = algorithmNames();
     EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
-                                              "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
+                                               "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, KnobValues{}, error);
@@ -40,9 +40,9 @@ TEST(Registry, UnknownNameIsAnErrorThatListsTheKnownOnes) {
 
 TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
     EXPECT_EQ(algorithmNames(2), (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
-    EXPECT_EQ(algorithmNames(3), (std::vector<std::string>{"all", "vfc", "exact", "lazy-grid",
-                                                          "lazy-grid-z", "busy-grid",
-                                                          "busy-grid-tight"}));
+    EXPECT_EQ(algorithmNames(3),
+              (std::vector<std::string>{"all", "vfc", "exact", "lazy-grid", "lazy-grid-z",
+                                        "busy-grid", "busy-grid-tight"}));
     std::string why;
     EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));
     EXPECT_TRUE(algorithmFits("lazy-grid", test::scene3d(), why));
@@ -102,7 +102,8 @@ TEST(Registry, OnlyFamiliesThatDrawAnImageTakeATarget) {
     EXPECT_STREQ(culler->name(), "lazy-grid-test");
 }
 
-FamilyEntry toyFamily(const std::string& id, const std::string& algorithm, const std::string& knob) {
+FamilyEntry toyFamily(const std::string& id, const std::string& algorithm,
+                      const std::string& knob) {
     FamilyEntry family;
     family.id = id;
     family.title = "toy";

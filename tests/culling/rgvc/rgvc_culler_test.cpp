@@ -20,7 +20,9 @@ namespace {
 using test::addBox;
 using test::addSphere;
 
-bool has(const std::vector<int>& ids, int id) { return std::binary_search(ids.begin(), ids.end(), id); }
+bool has(const std::vector<int>& ids, int id) {
+    return std::binary_search(ids.begin(), ids.end(), id);
+}
 
 // [0, 100]^2 in 100 x 100 voxels of 1 unit.
 Scene floorScene() {
@@ -125,9 +127,9 @@ TEST(RgvcCuller, TbvIsCreatedExpiresAndIsRevealed) {
     RgvcCuller rgvc(options);
     rgvc.setDebugCapture(true);
     const std::vector<FrameResult> frames = runChecked(scene, 40, rgvc);
-    EXPECT_FALSE(has(frames[0].pvs, 1));                              // hidden from the start
-    EXPECT_EQ(frames[1].stats.get(Counter::TbvCreated), 1);           // so it gets a TBV
-    EXPECT_EQ(frames[1].stats.get(Counter::ObjectUpdates), 0);        // and is left alone
+    EXPECT_FALSE(has(frames[0].pvs, 1));                        // hidden from the start
+    EXPECT_EQ(frames[1].stats.get(Counter::TbvCreated), 1);     // so it gets a TBV
+    EXPECT_EQ(frames[1].stats.get(Counter::ObjectUpdates), 0);  // and is left alone
     int64_t expired = 0, revealed = 0;
     for (const FrameResult& f : frames) {
         expired += f.stats.get(Counter::TbvExpired);
@@ -180,7 +182,7 @@ TEST(RgvcCuller, ObjectsOutsideTheGridAreKeptWhenInTheFrustum) {
 TEST(RgvcCuller, TbvReachingOutsideTheGridIsKeptOutOfT) {
     Scene scene = floorScene();
     addBox(scene, 0, {40, 0, 0}, {42, 100, 0});  // a full-height wall
-    addSphere(scene, 1, {96, 50, 0}, 1);          // behind it, near the grid's edge
+    addSphere(scene, 1, {96, 50, 0}, 1);         // behind it, near the grid's edge
     moving(scene, {0, 3, 0});
     scene.finalize();
     // Looking at the wall for 1 s, then turning away (the TBV's disc leaves the
@@ -209,7 +211,8 @@ TEST(RgvcCuller, TbvReachingOutsideTheGridIsKeptOutOfT) {
             saw_edge_tbv = true;
             // An edge TBV is never written into T.
             for (int y = 0; y < 100; ++y)
-                for (int x = 0; x < 100; ++x) ASSERT_FALSE(rgvc.snapshot().tbvs->contains(x, y, tbv.object_index));
+                for (int x = 0; x < 100; ++x)
+                    ASSERT_FALSE(rgvc.snapshot().tbvs->contains(x, y, tbv.object_index));
         }
         if (f == 19) {
             EXPECT_TRUE(has(got.pvs, 1));

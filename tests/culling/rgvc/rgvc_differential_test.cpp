@@ -6,7 +6,8 @@
 // RgvcDifferential.*: 100 scenes x 20 frames with variations of the options.
 // RgvcSweep.Full: the full sweep, 1000 scenes x 20 frames, part of the default
 // run (a few seconds). A longer sweep:
-//   GRIDCULL_SWEEP_SCENES=10000 build/tests/core_tests --gtest_filter='RgvcSweep.*' On failure the seed and
+//   GRIDCULL_SWEEP_SCENES=10000 build/tests/core_tests --gtest_filter='RgvcSweep.*' On failure the
+//   seed and
 // frame are printed with the command that replays it (GRIDCULL_SEED=N).
 #include <cstdio>
 #include <cstdlib>
@@ -15,10 +16,10 @@
 
 #include <gtest/gtest.h>
 
-#include "culling/oracle/exact_oracle.h"
-#include "tests/common/test_seeds.h"
-#include "culling/rgvc/rgvc_culler.h"
 #include "culling/baseline/vfc_culler.h"
+#include "culling/oracle/exact_oracle.h"
+#include "culling/rgvc/rgvc_culler.h"
+#include "tests/common/test_seeds.h"
 #include "tests/culling/rgvc/rgvc_random_scene.h"
 
 namespace gridcull {
@@ -127,7 +128,8 @@ TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
 
 TEST(RgvcSweep, Full) {
     int scenes = 1000;
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES")) scenes = std::max(1, std::atoi(count));
+    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
+        scenes = std::max(1, std::atoi(count));
     SweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(100000, scenes);
     for (const uint64_t seed : seeds)

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include "culling/baseline/vfc_culler.h"
+#include "culling/io/scene_loader.h"
 #include "culling/oracle/exact_oracle.h"
 #include "culling/rgvc/rgvc_culler.h"
-#include "culling/io/scene_loader.h"
-#include "culling/baseline/vfc_culler.h"
 
 namespace gridcull {
 namespace {
@@ -25,7 +25,8 @@ double median(std::vector<double> v) {
 }
 
 TEST(RgvcFigure1, SceneMatchesThePaperAndCullsConservatively) {
-    const SceneLoadResult loaded = loadSceneFile(std::string(GRIDCULL_SOURCE_DIR) + "/scenes/figure1-2d.json");
+    const SceneLoadResult loaded =
+        loadSceneFile(std::string(GRIDCULL_SOURCE_DIR) + "/scenes/figure1-2d.json");
     ASSERT_TRUE(loaded.scene.has_value()) << (loaded.errors.empty() ? "" : loaded.errors.front());
     const Scene& scene = *loaded.scene;
     EXPECT_EQ(scene.dimensions, 2);
@@ -70,16 +71,20 @@ TEST(RgvcFigure1, SceneMatchesThePaperAndCullsConservatively) {
     const double n = double(scene.frames);
     std::printf("[ rgvc ] figure1-2d, %d frames, %zu objects: false culls %lld\n", scene.frames,
                 scene.objects.size(), (long long)false_culls);
-    std::printf("[ rgvc ]   rgvc: cull %.3f ms (median), PVS %.1f, exact %.1f, PVS/exact %.2f, "
-                "voxels visited %.0f, object updates %.1f, TBVs created %.2f expired %.2f revealed %.2f per frame\n",
-                median(rgvc_ms), pvs / n, exact_pvs / n, double(pvs) / double(exact_pvs), visited / n,
-                updates / n, created / n, expired / n, revealed / n);
-    std::printf("[ rgvc ]   vfc:  cull %.3f ms (median), PVS %.1f, PVS/exact %.2f\n", median(vfc_ms),
-                vfc_pvs / n, double(vfc_pvs) / double(exact_pvs));
+    std::printf(
+        "[ rgvc ]   rgvc: cull %.3f ms (median), PVS %.1f, exact %.1f, PVS/exact %.2f, "
+        "voxels visited %.0f, object updates %.1f, TBVs created %.2f expired %.2f revealed %.2f "
+        "per frame\n",
+        median(rgvc_ms), pvs / n, exact_pvs / n, double(pvs) / double(exact_pvs), visited / n,
+        updates / n, created / n, expired / n, revealed / n);
+    std::printf("[ rgvc ]   vfc:  cull %.3f ms (median), PVS %.1f, PVS/exact %.2f\n",
+                median(vfc_ms), vfc_pvs / n, double(vfc_pvs) / double(exact_pvs));
     const RgvcMatrixMemory m = rgvc.memory();
-    std::printf("[ rgvc ]   memory: O %zu, Os %zu, H %zu, I static %zu, I dynamic %zu, T %zu, scratch %zu bytes\n",
-                m.occluder, m.static_occluder, m.occlusion, m.identifiers_static, m.identifiers_dynamic,
-                m.tbv, m.traversal);
+    std::printf(
+        "[ rgvc ]   memory: O %zu, Os %zu, H %zu, I static %zu, I dynamic %zu, T %zu, scratch %zu "
+        "bytes\n",
+        m.occluder, m.static_occluder, m.occlusion, m.identifiers_static, m.identifiers_dynamic,
+        m.tbv, m.traversal);
     EXPECT_EQ(false_culls, 0);
     EXPECT_LT(pvs, vfc_pvs / 2);  // occlusion must pay off in this scene
 }

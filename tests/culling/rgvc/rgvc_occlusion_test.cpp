@@ -25,8 +25,9 @@ namespace {
 using Blocks = std::set<std::pair<int, int>>;
 
 RgvcExtendedOccluder extend(const Blocks& blocks, glm::ivec2 initial, glm::i64vec2 viewer) {
-    return extendOccluder(initial, viewer, 20, 20,
-                          [&](int x, int y) { return blocks.count({x, y}) > 0; });
+    return extendOccluder(initial, viewer, 20, 20, [&](int x, int y) {
+        return blocks.count({x, y}) > 0;
+    });
 }
 
 TEST(RgvcExtension, FourStepsTowardsThenAwayFromTheViewer) {
@@ -98,9 +99,9 @@ TEST(RgvcOcclusionPolygon, CornerPolygonIsTheShadowOfTheL) {
     std::array<RgvcOcclusionPolygon, 2> polys;
     ASSERT_EQ(occlusionPolygons(occ, grid, {1.5, 2.5}, polys), 1);
     EXPECT_EQ(polys[0].plane_count, 4);
-    EXPECT_TRUE(polys[0].containsPoint({10.0, 12.0}, 0.0));   // inside the L's elbow
-    EXPECT_FALSE(polys[0].containsPoint({3.0, 12.0}, 0.0));   // beside the column
-    EXPECT_FALSE(polys[0].containsPoint({10.0, 6.0}, 0.0));   // in front of the row
+    EXPECT_TRUE(polys[0].containsPoint({10.0, 12.0}, 0.0));  // inside the L's elbow
+    EXPECT_FALSE(polys[0].containsPoint({3.0, 12.0}, 0.0));  // beside the column
+    EXPECT_FALSE(polys[0].containsPoint({10.0, 6.0}, 0.0));  // in front of the row
 }
 
 // Does the segment from a to b meet the occluder's voxels?
@@ -108,7 +109,8 @@ bool segmentMeetsOccluder(const RgvcExtendedOccluder& occ, const RegularGrid& gr
                           glm::dvec3 b) {
     for (const glm::ivec2 end : {occ.legXEnd(), occ.legYEnd()}) {
         const glm::ivec2 lo = glm::min(occ.corner, end), hi = glm::max(occ.corner, end);
-        const Aabb box{grid.voxelBounds({lo.x, lo.y, 0}).min, grid.voxelBounds({hi.x, hi.y, 0}).max};
+        const Aabb box{grid.voxelBounds({lo.x, lo.y, 0}).min,
+                       grid.voxelBounds({hi.x, hi.y, 0}).max};
         if (segmentMeetsRect(a, b, box.min, box.max)) return true;
     }
     return false;
@@ -176,8 +178,10 @@ TEST(RgvcOcclusion, OccludersAndOccludedVoxelsAreSoundOnRandomScenes) {
                         }
                         if (inside_one) break;
                     }
-                    ASSERT_TRUE(inside_one) << "occluded voxel " << x << "," << y << " not wholly inside";
-                    ASSERT_FALSE(b.min.x <= apex.x && apex.x <= b.max.x && b.min.y <= apex.y && apex.y <= b.max.y);
+                    ASSERT_TRUE(inside_one)
+                        << "occluded voxel " << x << "," << y << " not wholly inside";
+                    ASSERT_FALSE(b.min.x <= apex.x && apex.x <= b.max.x && b.min.y <= apex.y &&
+                                 apex.y <= b.max.y);
                     ++occluded;
                 }
             }

@@ -40,9 +40,12 @@ inline glm::dvec3 rgvcRandomViewpoint(SeededRandom& rng, const Scene& scene) {
         const int j = int(rng.below(uint64_t(scene.grid.resolution.y) + 1));
         const double gx = w.min.x + i * d.x, gy = w.min.y + j * d.y;
         const double sub = rng.uniform();
-        if (sub < 0.4) p.x = gx;
-        else if (sub < 0.8) p.y = gy;
-        else p = {gx, gy, 0.0};
+        if (sub < 0.4)
+            p.x = gx;
+        else if (sub < 0.8)
+            p.y = gy;
+        else
+            p = {gx, gy, 0.0};
     } else if (kind < 0.6 && !scene.objects.empty()) {
         p = scene.objects[rng.below(scene.objects.size())].anchor;
     }
@@ -56,9 +59,8 @@ inline Scene rgvcRandomScene(uint64_t seed) {
     const glm::dvec3 lo{rng.uniform(-50.0, 50.0), rng.uniform(-50.0, 50.0), 0.0};
     const int res_x = 4 + int(rng.below(61));
     // Square voxels most of the time, any shape now and then.
-    const int res_y = rng.uniform() < 0.7
-                          ? std::max(1, int(std::lround(res_x * height / width)))
-                          : 4 + int(rng.below(61));
+    const int res_y = rng.uniform() < 0.7 ? std::max(1, int(std::lround(res_x * height / width)))
+                                          : 4 + int(rng.below(61));
     Scene scene = makeScene(2, Aabb{lo, lo + glm::dvec3(width, height, 0.0)}, {res_x, res_y, 1});
     scene.seed = seed;
     scene.frames = kRgvcFrames;
@@ -116,7 +118,9 @@ inline Scene rgvcRandomScene(uint64_t seed) {
             for (int k = 0; k < 3; ++k) {
                 const glm::dvec3 next = p + randomDirection(rng, 2) * (speed * 0.7);
                 o.motion.keys.push_back(PositionKey{0.7 * k, p});
-                if (k > 0) best = std::max(best, glm::length(p - o.motion.keys[size_t(k) - 1].position) / 0.7);
+                if (k > 0)
+                    best = std::max(best,
+                                    glm::length(p - o.motion.keys[size_t(k) - 1].position) / 0.7);
                 p = next;
             }
             o.motion.max_speed = best;
@@ -136,7 +140,8 @@ inline Scene rgvcRandomScene(uint64_t seed) {
         CameraKey key;
         key.t = keys == 1 ? 0.0 : duration * k / (keys - 1);
         key.position = rgvcRandomViewpoint(rng, scene);
-        key.target = glm::dvec3(rng.uniform(lo.x, lo.x + width), rng.uniform(lo.y, lo.y + height), 0);
+        key.target =
+            glm::dvec3(rng.uniform(lo.x, lo.x + width), rng.uniform(lo.y, lo.y + height), 0);
         if (rng.uniform() < 0.1) key.target = key.position;  // no direction: looks along +x
         scene.camera.path.push_back(key);
     }

@@ -51,8 +51,7 @@ TEST(RgvcTbv, BoundaryCircleSeparatesTheDiscFromEveryEightConnectedPath) {
         const RgvcTbvCurve curve = tbvCurveFor(grid, c, r);
         VoxelSet boundary;
         forEachTbvBoundaryVoxel(curve, [&](int x, int y) { boundary.insert({x, y}); });
-        for (const auto& v : boundary)
-            ASSERT_TRUE(tbvCurveMayEnclose(curve, {v.first, v.second}));
+        for (const auto& v : boundary) ASSERT_TRUE(tbvCurveMayEnclose(curve, {v.first, v.second}));
         // Flood fill 8-connected from outside the curve's box, never entering it.
         const int64_t reach = curve.radius + 3;
         const int64_t x0 = curve.centre.x - reach, x1 = curve.centre.x + reach;

@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/trigonometric.hpp>
 
 #include "culling/rgvc/rgvc_culler.h"
 #include "grid/chess_ring.h"
@@ -59,8 +59,9 @@ bool boxMeetsWedge(double x0, double y0, double x1, double y1, glm::dvec2 apex, 
 }
 
 // The voxels of the grid in the frustum, by brute force; and their layers.
-std::map<std::pair<int, int>, int64_t> bruteForceFrustum(const RegularGrid& grid, const Camera& camera,
-                                                         glm::i64vec2 viewer, bool use_reference) {
+std::map<std::pair<int, int>, int64_t> bruteForceFrustum(const RegularGrid& grid,
+                                                         const Camera& camera, glm::i64vec2 viewer,
+                                                         bool use_reference) {
     RgvcWedge wedge;
     wedge.set(camera, grid.voxelSize());
     const double heading = std::atan2(camera.forward().y, camera.forward().x);
@@ -70,8 +71,10 @@ std::map<std::pair<int, int>, int64_t> bruteForceFrustum(const RegularGrid& grid
             bool touches;
             if (use_reference) {
                 const Aabb b = grid.voxelBounds({x, y, 0});
-                const double gx = std::max({b.min.x - camera.position.x, 0.0, camera.position.x - b.max.x});
-                const double gy = std::max({b.min.y - camera.position.y, 0.0, camera.position.y - b.max.y});
+                const double gx =
+                    std::max({b.min.x - camera.position.x, 0.0, camera.position.x - b.max.x});
+                const double gy =
+                    std::max({b.min.y - camera.position.y, 0.0, camera.position.y - b.max.y});
                 touches = std::hypot(gx, gy) <= camera.far &&
                           (camera.fov_deg >= 360.0 ||
                            boxMeetsWedge(b.min.x, b.min.y, b.max.x, b.max.y,
@@ -105,8 +108,8 @@ TEST(RgvcFrustum, VoxelTestMatchesAnExactReference) {
             // Conservative: every voxel meeting the frustum is in.
             for (const auto& entry : exact)
                 ASSERT_TRUE(fast.count(entry.first))
-                    << "seed " << seed << " frame " << frame << " voxel " << entry.first.first << ","
-                    << entry.first.second << " meets the frustum but was left out";
+                    << "seed " << seed << " frame " << frame << " voxel " << entry.first.first
+                    << "," << entry.first.second << " meets the frustum but was left out";
             // And not loose: extra voxels can only come from rounding slack.
             disagreements += int(fast.size() - exact.size());
             voxels += int(exact.size());
@@ -129,8 +132,8 @@ TEST(RgvcTraversal, VisitsEveryFrustumVoxelOnceInChessOrder) {
             rgvc.cull(scene, camera, t, out);
             const RgvcSnapshot& snap = rgvc.snapshot();
             ASSERT_TRUE(snap.valid);
-            SCOPED_TRACE("seed " + std::to_string(seed) + " frame " + std::to_string(frame) + " fov " +
-                         std::to_string(camera.fov_deg));
+            SCOPED_TRACE("seed " + std::to_string(seed) + " frame " + std::to_string(frame) +
+                         " fov " + std::to_string(camera.fov_deg));
             const auto want = bruteForceFrustum(scene.grid, camera, snap.viewer_voxel, false);
             std::map<std::pair<int, int>, int> times;
             int64_t last_layer = -1;
@@ -140,15 +143,16 @@ TEST(RgvcTraversal, VisitsEveryFrustumVoxelOnceInChessOrder) {
                 ASSERT_GE(visit.layer, last_layer) << "layers must not decrease";
                 last_layer = visit.layer;
                 const auto it = want.find(key);
-                ASSERT_TRUE(it != want.end()) << "visited " << key.first << "," << key.second
-                                              << " outside the frustum";
+                ASSERT_TRUE(it != want.end())
+                    << "visited " << key.first << "," << key.second << " outside the frustum";
                 ASSERT_EQ(it->second, visit.layer);
                 ASSERT_FALSE(visit.occluded);  // nothing to occlude
             }
             for (const auto& entry : want)
                 ASSERT_EQ(times[entry.first], 1)
                     << "voxel " << entry.first.first << "," << entry.first.second << " layer "
-                    << entry.second << " viewer " << snap.viewer_voxel.x << "," << snap.viewer_voxel.y;
+                    << entry.second << " viewer " << snap.viewer_voxel.x << ","
+                    << snap.viewer_voxel.y;
             ASSERT_EQ(out.stats.get(Counter::VoxelsVisited), int64_t(want.size()));
             // One seed per layer traversed, on that layer.
             for (const RgvcSeed& seed_voxel : snap.seeds)
@@ -165,7 +169,8 @@ void checkEmptySceneCamera(const Scene& base, const glm::dvec3& eye, double head
                            double far) {
     Scene scene = base;
     const double h = glm::radians(heading_deg);
-    test::setCamera(scene, eye, eye + glm::dvec3(std::cos(h), std::sin(h), 0) * 10.0, fov, 0.1, far);
+    test::setCamera(scene, eye, eye + glm::dvec3(std::cos(h), std::sin(h), 0) * 10.0, fov, 0.1,
+                    far);
     RgvcCuller rgvc;
     rgvc.setDebugCapture(true);
     rgvc.reset(scene);
@@ -191,15 +196,15 @@ TEST(RgvcTraversal, GridPointsGridLinesAndFarOutside) {
     // 32 x 24 voxels of 2.5 x 2 units over [-40, 40] x [-24, 24].
     const Scene base = test::makeScene(2, Aabb{{-40, -24, 0}, {40, 24, 0}}, {32, 24, 1});
     const std::vector<glm::dvec3> eyes = {
-        {0, 0, 0},          // a voxel corner in the middle
-        {-40, -24, 0},      // the grid's corner
-        {40, 24, 0},        // the opposite corner (outside the half-open grid)
-        {2.5, 1.0, 0},      // on a vertical voxel face
-        {1.25, 2.0, 0},     // on a horizontal voxel face
-        {-45, 0, 0},        // just outside, left
-        {0, 30, 0},         // just outside, above
-        {-300, -200, 0},    // far outside, diagonal
-        {5000, 0, 0},       // very far outside, on the grid's middle row
+        {0, 0, 0},        // a voxel corner in the middle
+        {-40, -24, 0},    // the grid's corner
+        {40, 24, 0},      // the opposite corner (outside the half-open grid)
+        {2.5, 1.0, 0},    // on a vertical voxel face
+        {1.25, 2.0, 0},   // on a horizontal voxel face
+        {-45, 0, 0},      // just outside, left
+        {0, 30, 0},       // just outside, above
+        {-300, -200, 0},  // far outside, diagonal
+        {5000, 0, 0},     // very far outside, on the grid's middle row
     };
     const double fovs[] = {10, 45, 90, 179.9, 180, 180.1, 270, 359.9, 360};
     const double fars[] = {1000, 17.5, 1e6};
@@ -208,9 +213,9 @@ TEST(RgvcTraversal, GridPointsGridLinesAndFarOutside) {
         for (int heading = 0; heading < 360; heading += 15) {
             for (const double fov : fovs) {
                 for (const double far : fars) {
-                    SCOPED_TRACE("eye " + std::to_string(eye.x) + "," + std::to_string(eye.y) + " heading " +
-                                 std::to_string(heading) + " fov " + std::to_string(fov) + " far " +
-                                 std::to_string(far));
+                    SCOPED_TRACE("eye " + std::to_string(eye.x) + "," + std::to_string(eye.y) +
+                                 " heading " + std::to_string(heading) + " fov " +
+                                 std::to_string(fov) + " far " + std::to_string(far));
                     checkEmptySceneCamera(base, eye, heading, fov, far);
                     if (testing::Test::HasFatalFailure()) return;
                     ++cameras;

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 namespace gridcull {
 namespace {
@@ -38,7 +38,7 @@ TEST(Camera, FrustumPlanesBoundTheView) {
     const Camera cam = cameraAt(sceneWithPath(), 0.0);  // at origin looking +z
     const auto planes = cam.frustumPlanes();
     EXPECT_TRUE(insideAll(planes, {0, 0, 50}));
-    EXPECT_FALSE(insideAll(planes, {0, 0, 0.5}));   // before near
+    EXPECT_FALSE(insideAll(planes, {0, 0, 0.5}));    // before near
     EXPECT_FALSE(insideAll(planes, {0, 0, 100.5}));  // past far
     // Vertical half-angle 45 degrees; horizontal tan = aspect * tan(45) = 2.
     EXPECT_TRUE(insideAll(planes, {0, 9.9, 10}));

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
-#include "culling/scene/random_walk.h"
 #include "culling/io/scene_loader.h"
+#include "culling/scene/random_walk.h"
 
 namespace gridcull {
 namespace {
@@ -134,8 +134,7 @@ TEST(SceneMotion, RandomWalkKeepsItsSpeedBoundAndTheWorld) {
     for (const SceneObject& o : s.objects) {
         ASSERT_EQ(o.motion.kind, MotionKind::Random);
         ASSERT_FALSE(o.motion.segment_velocities.empty());
-        const double span =
-            o.motion.segment_seconds * double(o.motion.segment_velocities.size());
+        const double span = o.motion.segment_seconds * double(o.motion.segment_velocities.size());
         EXPECT_GE(span, s.frames * s.dt);
         glm::dvec3 previous = s.positionAt(o.id, 0.0);
         EXPECT_EQ(previous, o.anchor);

@@ -341,8 +341,8 @@ TEST_F(LazyGridPanelTest, ColumnDrawsHeadlessAndAsksForNothing) {
         io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
         ImGui::NewFrame();
         // Pass 3: another culler, whose family has no view.
-        const UiActions actions = drawDebuggerUi(snapshot_, state, layout,
-                                                 pass == 3 ? nullptr : view.get(), context);
+        const UiActions actions =
+            drawDebuggerUi(snapshot_, state, layout, pass == 3 ? nullptr : view.get(), context);
         ImGui::Render();
         EXPECT_TRUE(actions.family.knobs.empty());
         if (pass == 2) vertices_with = ImGui::GetDrawData()->TotalVtxCount;
