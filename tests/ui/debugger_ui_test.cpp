@@ -10,7 +10,7 @@
 
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
-#include "tests/ui/session_frame_snapshot.h"
+#include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
 
 namespace gridcull {

@@ -23,18 +23,9 @@ namespace {
 using test::atView;
 using test::TestShape;
 
-constexpr int kWidth = 48;
-constexpr int kHeight = 32;
-Camera obliqueCamera() {
-    Camera camera;
-    camera.position = {1.0, 2.0, 3.0};
-    camera.target = {1.4, 2.3, 13.0};
-    camera.fov_deg = 60.0;
-    camera.aspect = 1.5;
-    camera.near = 0.5;
-    camera.far = 50.0;
-    return camera;
-}
+constexpr int kWidth = test::kRasterWidth;
+constexpr int kHeight = test::kRasterHeight;
+using test::obliqueCamera;
 
 test::PixelTally expectMatches(const Camera& cam, const TestShape& shape, const char* what) {
     const test::PixelTally tally = test::expectShapeMatches(cam, kWidth, kHeight, shape, what);
@@ -183,7 +174,7 @@ void expectSharedEdgeCoveredOnce(int width, int height, const ScreenPoint (&q)[4
         cam, width, height, test::meshShape(test::triangleOn(w[0], w[2], w[3]), origin));
     const std::vector<double> whole = test::drawnAlone(
         cam, width, height,
-        test::meshShape(test::makeMesh({w[0], w[1], w[2], w[3]}, {0, 1, 2, 0, 2, 3}, false),
+        test::meshShape(test::finishMesh({w[0], w[1], w[2], w[3]}, {0, 1, 2, 0, 2, 3}, false),
                         origin));
     // The reversed winding covers the same pixels (at depths equal up to rounding).
     const std::vector<double> reversed = test::drawnAlone(

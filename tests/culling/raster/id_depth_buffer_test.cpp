@@ -25,20 +25,9 @@ namespace {
 using test::atView;
 using test::TestShape;
 
-// A camera turned off every axis (so no pixel ray is axis-parallel by accident),
-// 48 x 32 pixels over an aspect of 1.5.
-constexpr int kWidth = 48;
-constexpr int kHeight = 32;
-Camera obliqueCamera() {
-    Camera camera;
-    camera.position = {1.0, 2.0, 3.0};
-    camera.target = {1.4, 2.3, 13.0};
-    camera.fov_deg = 60.0;
-    camera.aspect = 1.5;
-    camera.near = 0.5;
-    camera.far = 50.0;
-    return camera;
-}
+constexpr int kWidth = test::kRasterWidth;
+constexpr int kHeight = test::kRasterHeight;
+using test::obliqueCamera;
 
 // Half the image plane at depth 1: the view-space x (y) of the left/right
 // (top/bottom) image border at depth z is +-kHalfX * z (+-kHalfY * z).

@@ -34,8 +34,25 @@
 #include "culling/raster/id_depth_buffer.h"
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
+#include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull::test {
+
+// The designed cases' camera: turned off every axis (so no pixel ray is
+// axis-parallel by accident), kRasterWidth x kRasterHeight pixels over an
+// aspect of 1.5.
+constexpr int kRasterWidth = 48;
+constexpr int kRasterHeight = 32;
+inline Camera obliqueCamera() {
+    Camera camera;
+    camera.position = {1.0, 2.0, 3.0};
+    camera.target = {1.4, 2.3, 13.0};
+    camera.fov_deg = 60.0;
+    camera.aspect = 1.5;
+    camera.near = 0.5;
+    camera.far = 50.0;
+    return camera;
+}
 
 // Depths agree within this relative error. Both sides solve the same exact
 // equation along different arithmetic paths (the buffer: view-space quadratics
@@ -94,20 +111,6 @@ inline TestShape meshShape(std::shared_ptr<const TriangleMesh> mesh, const glm::
     return s;
 }
 
-// Meshes built here rather than by the scene helpers, so the reference owns its
-// geometry: `closed` as TriangleMesh documents it, bounds from the vertices.
-inline std::shared_ptr<TriangleMesh> makeMesh(std::vector<glm::dvec3> vertices,
-                                              std::vector<uint32_t> indices, bool closed) {
-    auto mesh = std::make_shared<TriangleMesh>();
-    mesh->file = "raster test";
-    mesh->vertices = std::move(vertices);
-    mesh->indices = std::move(indices);
-    mesh->closed = closed;
-    mesh->bounds = Aabb{mesh->vertices.front(), mesh->vertices.front()};
-    for (const glm::dvec3& v : mesh->vertices) mesh->bounds.merge(Aabb{v, v});
-    return mesh;
-}
-
 // The surface of the box [-half, half] as 12 triangles (closed, or open to see
 // that an open surface has no solid inside). Vertex i takes max.x for bit 0,
 // max.y for bit 1, max.z for bit 2; each face is split along one diagonal.
@@ -116,25 +119,25 @@ inline std::shared_ptr<TriangleMesh> boxSurfaceMesh(const glm::dvec3& half, bool
     for (int i = 0; i < 8; ++i)
         v.push_back(
             {(i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y, (i & 4) ? half.z : -half.z});
-    return makeMesh(v, {0, 4, 6, 0, 6, 2,   // x = -half.x
-                        1, 3, 7, 1, 7, 5,   // x = +half.x
-                        0, 1, 5, 0, 5, 4,   // y = -half.y
-                        2, 6, 7, 2, 7, 3,   // y = +half.y
-                        0, 2, 3, 0, 3, 1,   // z = -half.z
-                        4, 5, 7, 4, 7, 6},  // z = +half.z
-                    closed);
+    return finishMesh(v, {0, 4, 6, 0, 6, 2,   // x = -half.x
+                          1, 3, 7, 1, 7, 5,   // x = +half.x
+                          0, 1, 5, 0, 5, 4,   // y = -half.y
+                          2, 6, 7, 2, 7, 3,   // y = +half.y
+                          0, 2, 3, 0, 3, 1,   // z = -half.z
+                          4, 5, 7, 4, 7, 6},  // z = +half.z
+                      closed);
 }
 
 // The closed tetrahedron on four points (every edge in exactly two faces).
 inline std::shared_ptr<TriangleMesh> tetrahedronOn(const glm::dvec3& a, const glm::dvec3& b,
                                                    const glm::dvec3& c, const glm::dvec3& d) {
-    return makeMesh({a, b, c, d}, {0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 3}, true);
+    return finishMesh({a, b, c, d}, {0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 3}, true);
 }
 
 // One open triangle.
 inline std::shared_ptr<TriangleMesh> triangleOn(const glm::dvec3& a, const glm::dvec3& b,
                                                 const glm::dvec3& c) {
-    return makeMesh({a, b, c}, {0, 1, 2}, false);
+    return finishMesh({a, b, c}, {0, 1, 2}, false);
 }
 
 // The world point at view-space (x, y, z) of `camera` (x right, y up, z forward).
