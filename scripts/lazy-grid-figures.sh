@@ -96,8 +96,10 @@ for scene in forest-walk-3d city-walk-3d; do
     bench "$out/$scene-cell-size.txt" "scenes/$scene.json" --algo "vfc,$list" --runs "$runs" \
         --oracle-res 640
     # Rows: label median ... pvs/exact (7th) ... pixel_queries=Q among the counters.
-    awk '$1 ~ /lazy-cell-size=/ {
-            split($1, a, "lazy-cell-size="); split(a[2], b, ":"); kind = $1; sub(/:lazy-cell-size=[0-9]+/, "", kind)
+    # Tables written before the knobs were named after their family say "cell-size=".
+    awk '$1 ~ /cell-size=/ {
+            split($1, a, "cell-size="); split(a[2], b, ":"); kind = $1
+            sub(/:(lazy-)?cell-size=[0-9]+/, "", kind)
             q = ""; for (i = 11; i <= NF; ++i) if ($i ~ /^pixel_queries=/) { q = $i; sub(/.*=/, "", q) }
             print kind, b[1], $2, q, $7 }' "$out/$scene-cell-size.txt" >"$tmp/cells.dat"
     for kind in busy-grid busy-grid-tight lazy-grid lazy-grid:lazy-prob=0.5; do
