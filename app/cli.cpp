@@ -30,15 +30,17 @@ int dispatch(int argc, char** argv) {
     CullCommand cull;
     BenchCommand bench;
     WindowCommand shot, view;
-    KnobsCommand knobs;
+    KnobsCommand knobs, counters;
     CLI::App* cull_app = addCullCommand(app, cull);
     CLI::App* bench_app = addBenchCommand(app, bench);
     CLI::App* shot_app = addShotCommand(app, shot);
     CLI::App* view_app = addViewCommand(app, view);
     CLI::App* knobs_app = addKnobsCommand(app, knobs);
+    CLI::App* counters_app = addCountersCommand(app, counters);
     for (CLI::App* sub : app.get_subcommands({})) sub->formatter(helpFormatter());
 
     try {
+        if (argc == 2 && std::string(argv[1]) == "help") throw CLI::CallForHelp();
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
         // The help of the command asked about (CLI11 delegates to it).
@@ -62,6 +64,7 @@ int dispatch(int argc, char** argv) {
     if (shot_app->parsed()) return runShot(shot);
     if (view_app->parsed()) return runView(view);
     if (knobs_app->parsed()) return runKnobs(knobs);
+    if (counters_app->parsed()) return runCounters(counters);
     ViewOptions options;
     return runWindow(defaultScene(), options);
 }
@@ -79,7 +82,7 @@ bool splitAlgorithms(const std::string& list, std::vector<std::string>& names, s
         if (!found) {
             std::string all;
             for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
-            error = "unknown algorithm '" + name + "' (known: " + all + ")";
+            error = "unknown algorithm '" + name + "', expected one of: " + all;
             return false;
         }
         names.push_back(name);
@@ -117,6 +120,14 @@ bool parseAlgoVariants(const std::string& list, const KnobValues& base,
             if (!knob) {
                 error = "--algo entry '" + entry + "': '" + flag +
                         "' is not a knob (gridcull knobs lists them)";
+                return false;
+            }
+            // The reference's knobs go with any entry (they set what the image-space
+            // families follow); another family's knob would do nothing here.
+            const FamilyEntry* owner = familyOfKnob(flag);
+            if (!owner->reference && owner != familyOfAlgorithm(registryAlgorithmOf(parts[0]))) {
+                error = "--algo entry '" + entry + "': --" + flag + " is a knob of " +
+                        owner->title + ", not of " + parts[0];
                 return false;
             }
             double value = 0.0;

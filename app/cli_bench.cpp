@@ -59,7 +59,7 @@ int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
 // family's first knob with a plain default, at a quarter and at twice it.
 std::string variantExample() {
     for (const FamilyEntry& family : families()) {
-        if (family.id == "oracle") continue;  // its knobs apply to the reference, not a culler
+        if (family.reference) continue;  // its knobs apply to the reference, not a culler
         for (const Knob& knob : family.knobs) {
             if (!knob.automatic.empty() || knob.default_value <= 0.0) continue;
             double low = std::clamp(knob.default_value / 4, knob.min, knob.max);
@@ -100,7 +100,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
     cmd->add_option("--runs", c.runs, "repetitions, 1 to 1000 (default 5)")
         ->check(CLI::Range(1LL, 1000LL).description(""))
         ->type_name("N");
-    cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
+    c.csv_option = cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
         ->type_name("FILE");
     cmd->add_flag("--no-quality", c.no_quality, "skip the exact oracle (pvs only, faster)");
     c.knobs.addTo(*cmd, false);
@@ -146,7 +146,7 @@ int runBench(const BenchCommand& c) {
     }
     std::unique_ptr<Culler> oracle;
     if (quality) {
-        oracle = makeCuller("exact", knobs, error);
+        oracle = makeCuller(referenceAlgorithm(), knobs, error);
         if (!oracle) {
             std::cerr << "gridcull bench: " << error << "\n";
             return kExitFailure;
@@ -190,7 +190,7 @@ int runBench(const BenchCommand& c) {
     }
 
     std::fputs(formatBenchTable(benches, n_frames, n_runs).c_str(), stdout);
-    if (!c.csv.empty()) {
+    if (c.csv_option->count() > 0) {
         OutputFile csv;
         const std::string text = formatBenchCsv(benches, n_frames, n_runs, scene.dt);
         bool ok = csv.open(c.csv, error);

@@ -14,6 +14,7 @@ struct CullCommand {
     std::string scene, algo, out;
     long long frames = -1;
     KnobOptions knobs;
+    const CLI::Option* out_option = nullptr;  // given: write to `out`
 };
 CLI::App* addCullCommand(CLI::App& app, CullCommand& c);
 int runCull(const CullCommand& c);
@@ -23,6 +24,7 @@ struct BenchCommand {
     long long frames = -1, runs = 5;
     bool no_quality = false;
     KnobOptions knobs;
+    const CLI::Option* csv_option = nullptr;  // given: write `csv`
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c);
 int runBench(const BenchCommand& c);
@@ -44,6 +46,9 @@ struct KnobsCommand {
 };
 CLI::App* addKnobsCommand(CLI::App& app, KnobsCommand& c);
 int runKnobs(const KnobsCommand& c);
+// `counters` shares KnobsCommand's one flag, --markdown.
+CLI::App* addCountersCommand(CLI::App& app, KnobsCommand& c);
+int runCounters(const KnobsCommand& c);
 
 // Prints each note of KnobOptions::unusedNotes as "gridcull CMD: note: ...".
 void printUnusedNotes(const std::string& command, const KnobOptions& knobs,

@@ -25,7 +25,8 @@ CLI::App* addCullCommand(CLI::App& app, CullCommand& c) {
                     "frames to run, 1 to 100000000 (default: the scene's time.frames)")
         ->check(CLI::Range(1LL, 100000000LL).description(""))
         ->type_name("N");
-    cmd->add_option("--out", c.out, "write to FILE instead of standard output")->type_name("FILE");
+    c.out_option =
+        cmd->add_option("--out", c.out, "write to FILE instead of standard output")->type_name("FILE");
     c.knobs.addTo(*cmd, false);
     cmd->footer(cullingHelpFooter(appAlgorithmNames()));
     return cmd;
@@ -54,7 +55,8 @@ int runCull(const CullCommand& c) {
     }
     OutputFile file;
     std::FILE* out = stdout;
-    if (!c.out.empty()) {
+    const bool to_file = c.out_option->count() > 0;
+    if (to_file) {
         if (!file.open(c.out, error)) {
             std::cerr << "gridcull cull: " << error << "\n";
             return kExitFailure;
@@ -73,7 +75,7 @@ int runCull(const CullCommand& c) {
         appendFrameJson(line, frame, t, culler->name(), camera, result);
         std::fwrite(line.data(), 1, line.size(), out);
     }
-    if (!c.out.empty() && !file.commit(error)) {
+    if (to_file && !file.commit(error)) {
         std::cerr << "gridcull cull: " << error << "\n";
         return kExitFailure;
     }

@@ -1,10 +1,13 @@
 // `gridcull knobs [--markdown]`: every knob of every family, from the registry,
 // with its range, default and what it trades; --markdown prints the table of
-// docs/LIMITS.md (a test keeps that table equal to this output).
+// docs/LIMITS.md. `gridcull counters [--markdown]`: every counter with its
+// meaning, the table of docs/ARCHITECTURE.md. Tests keep both tables equal to
+// this output.
 #include <cstdio>
 
 #include "app/cli.h"
 #include "app/cli_commands.h"
+#include "culling/api/counters.h"
 #include "culling/registry/registry.h"
 #include "ui/registry/family_views.h"
 
@@ -61,6 +64,26 @@ int runKnobs(const KnobsCommand& c) {
         std::printf("  --%-20s %s, default %s\n  %22s %s\n", flag->flag.c_str(),
                     rangeCell(*flag).c_str(), knobDefaultText(*flag).c_str(), "",
                     flag->help.c_str());
+    return kExitOk;
+}
+
+CLI::App* addCountersCommand(CLI::App& app, KnobsCommand& c) {
+    CLI::App* cmd = app.add_subcommand(
+        "counters",
+        "Lists every counter the algorithms report (the stats of cull's JSON lines,\n"
+        "bench's counter columns, the window's statistics) with what it counts.");
+    cmd->add_flag("--markdown", c.markdown, "print the table of docs/ARCHITECTURE.md");
+    return cmd;
+}
+
+int runCounters(const KnobsCommand& c) {
+    if (c.markdown) std::printf("| counter | what it counts |\n| --- | --- |\n");
+    for (const CounterInfo& info : kCounters) {
+        if (c.markdown)
+            std::printf("| `%s` | %s |\n", info.name, info.meaning);
+        else
+            std::printf("  %-18s %s\n", info.name, info.meaning);
+    }
     return kExitOk;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/app_cullers.h"
 #include "culling/registry/registry.h"
 #include "culling/scene/scene_limits.h"
 #include "grid/regular_grid.h"
@@ -73,6 +74,7 @@ void KnobOptions::addTo(CLI::App& command, bool view_flags) {
         b.view_flag = view_flag;
         b.option = command.add_option("--" + knob->flag, b.text, knobDescription(*knob));
         b.option->type_name(knob->kind == KnobKind::Integer ? "N" : "X");
+        b.option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // the last one wins
         const std::string title = family ? family->title : "other";
         b.option->group(view_flag ? title + ", what the window shows" : title + " knobs");
     };
@@ -97,7 +99,7 @@ std::vector<std::string> KnobOptions::unusedNotes(
     for (const Bound& b : bound_) {
         if (b.option->count() == 0) continue;
         const FamilyEntry* owner = ownerOf(*b.knob, b.view_flag);
-        if (!owner || owner->id == "oracle") continue;  // the oracle runs with every algorithm
+        if (!owner || owner->reference) continue;  // the reference runs with every algorithm
         bool used = false;
         for (const std::string& algo : algorithms) {
             const FamilyEntry* family = familyOfAlgorithm(algo);
@@ -117,20 +119,17 @@ std::shared_ptr<CLI::Formatter> helpFormatter() {
 std::string cullingHelpFooter(const std::vector<std::string>& algorithms) {
     std::string text = "algorithms (--algo), and the scenes they run on:\n";
     for (const std::string& name : algorithms) {
+        // A -gl variant runs where its registry algorithm runs.
+        const std::string base = registryAlgorithmOf(name);
         const AlgorithmEntry* entry = nullptr;
-        const FamilyEntry* family = familyOfAlgorithm(name, &entry);
-        std::string dims = "2D, 3D", summary;
-        if (entry) {
-            dims = entry->dimensions == kRuns2d   ? "2D"
-                   : entry->dimensions == kRuns3d ? "3D"
-                                                  : "2D, 3D";
-            summary = entry->summary;
-        } else {
-            summary = "drawn with OpenGL, a read-back per pixel query";
-        }
-        (void)family;
+        if (!familyOfAlgorithm(base, &entry)) continue;
+        const char* dims = entry->dimensions == kRuns2d   ? "2D"
+                           : entry->dimensions == kRuns3d ? "3D"
+                                                          : "2D, 3D";
+        const std::string summary =
+            base == name ? entry->summary : base + " drawn with OpenGL, a read-back per pixel query";
         char line[256];
-        std::snprintf(line, sizeof line, "  %-20s %-7s ", name.c_str(), dims.c_str());
+        std::snprintf(line, sizeof line, "  %-20s %-7s ", name.c_str(), dims);
         text += line + wrap(summary, 31, kHelpWidth) + "\n";
     }
     char limits[1024];

@@ -1,6 +1,7 @@
 #include "app/debugger.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "app/hover_pick.h"
 #include "culling/io/scene_loader.h"
@@ -28,6 +29,7 @@ bool Debugger::init(const Scene& scene, std::string& error) {
     if (!renderer_.init(error)) return false;
     if (!session_.open(scene, scene.source_path, options_.algo, error)) return false;
     if (!checkViewFlags(options_.view_flags, session_.scene(), error)) return false;
+    flags_scene_generation_ = session_.sceneGeneration();
     algo_names_ = gridcull::algorithmNames(session_.scene().dimensions);
     syncFamilyView();
     renderer_.setScene(session_.scene());
@@ -38,16 +40,24 @@ bool Debugger::init(const Scene& scene, std::string& error) {
 }
 
 void Debugger::syncFamilyView() {
+    family_view_ = nullptr;
     const FamilyEntry* family = familyOfAlgorithm(session_.algo());
-    const std::string id = family ? family->id : "";
-    if (id == family_id_ && (family_view_ || !findFamilyView(id))) return;
-    family_id_ = id;
-    family_view_.reset();
-    const FamilyViewEntry* entry = findFamilyView(id);
+    const FamilyViewEntry* entry = family ? findFamilyView(family->id) : nullptr;
     if (!entry) return;
-    family_view_ = entry->make();
-    std::string ignored;  // checked in init(); a later scene may lack a picked id
-    family_view_->applyFlags(options_.view_flags, session_.scene(), ignored);
+    std::unique_ptr<FamilyView>& view = family_views_[entry->family];
+    if (!view) {
+        view = entry->make();
+        // The flags name things of the scene they were checked against (init).
+        std::string error;
+        if (session_.sceneGeneration() == flags_scene_generation_ &&
+            !view->applyFlags(options_.view_flags, session_.scene(), error))
+            scene_errors_ = {error};
+    }
+    family_view_ = view.get();
+}
+
+int Debugger::outlinedObject() const {
+    return family_view_ ? family_view_->focusedObject(familyContext()) : hovered_index_;
 }
 
 FamilyViewContext Debugger::familyContext() const {
@@ -153,7 +163,7 @@ FrameSnapshot Debugger::snapshot() const {
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
-    return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_.get(), familyContext());
+    return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_, familyContext());
 }
 
 void Debugger::setViewMode(ViewMode mode) {
@@ -185,7 +195,7 @@ void Debugger::openSceneFile(const std::string& path) {
     playing_ = false;
     hovered_index_ = -1;
     algo_names_ = gridcull::algorithmNames(session_.scene().dimensions);
-    if (family_view_) family_view_->sceneChanged();
+    for (auto& [id, view] : family_views_) view->sceneChanged();
     syncFamilyView();
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
@@ -217,9 +227,24 @@ void Debugger::apply(const UiActions& actions) {
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
     if (!actions.family.knobs.empty()) {
+        // Checked like the command line's values: a panel asking for a knob that
+        // is not there, or out of its range, is a bug to show, not to ignore.
         KnobValues knobs = session_.knobs();
-        for (const auto& [flag, value] : actions.family.knobs) knobs.set(flag, value);
         std::string error;
+        for (const auto& [flag, value] : actions.family.knobs) {
+            const Knob* knob = findKnob(flag);
+            char text[32];
+            std::snprintf(text, sizeof text, "%.17g", value);
+            double checked = 0.0;
+            if (!knob) {
+                error = "the panel set --" + flag + ", which is no knob";
+            } else if (parseKnobValue(*knob, text, checked, error)) {
+                knobs.set(flag, checked);
+                continue;
+            }
+            scene_errors_ = {error};
+            return;
+        }
         if (!session_.setKnobs(knobs, error)) scene_errors_ = {error};
     }
 }
@@ -244,8 +269,8 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.view = view_camera_.matrices(view_mode_, session_.cullingCamera(),
                                        double(v.width) / std::max(v.height, 1));
     const FamilyViewContext context = familyContext();
-    input.hovered_index = family_view_ ? family_view_->focusedObject(context) : hovered_index_;
-    input.family = family_view_.get();
+    input.hovered_index = outlinedObject();
+    input.family = family_view_;
     input.family_context = &context;
     last_draw_ms_ = renderer_.draw(input);
     session_.recordDrawMs(last_draw_ms_);

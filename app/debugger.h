@@ -7,6 +7,7 @@
 // ImGui::NewFrame() and ImGui::Render(), drawScene(), renders ImGui, then
 // apply()s the actions the panels returned. Needs a current GL context.
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ public:
     const std::vector<std::string>& offeredAlgorithms() const { return algo_names_; }
     // What the window last did on its own (say, switched the culler), or "".
     const std::string& note() const { return note_; }
+    // The object the view outlines (index, -1: none): the selected family's
+    // focus (a picked object, say), else the one under the mouse.
+    int outlinedObject() const;
 
     // Shots hide wall-clock times: they differ from run to run.
     void setShowTimings(bool show) { show_timings_ = show; }
@@ -69,7 +73,9 @@ public:
 private:
     FrameSnapshot snapshot() const;
     FamilyViewContext familyContext() const;
-    // Makes the family view for the selected algorithm when its family changed.
+    // Points family_view_ at the selected algorithm's family's view, made the
+    // first time that family is selected and kept after, so its state (toggles,
+    // picks) survives switching away and back.
     void syncFamilyView();
     void selectAlgorithm(const std::string& name);
     bool throughCullingCamera() const;
@@ -89,9 +95,13 @@ private:
     double last_draw_ms_ = 0.0;
     int hovered_index_ = -1;
     double hovered_distance_ = 0.0;
-    // The selected algorithm's family and its view (null for a family without one).
-    std::string family_id_;
-    std::unique_ptr<FamilyView> family_view_;
+    // One view per family shown so far, by family id, and the selected
+    // algorithm's (null for a family without one).
+    std::map<std::string, std::unique_ptr<FamilyView>> family_views_;
+    FamilyView* family_view_ = nullptr;
+    // The scene the command line's view flags were checked against: a view made
+    // later applies them only while that scene is open.
+    int flags_scene_generation_ = -1;
 };
 
 }  // namespace gridcull

@@ -6,9 +6,10 @@
 #                   [LINK external targets...] [PRIVATE_LINK ...] [EXCLUDE files...])
 #
 # builds every .cpp under DIR (FLAT: in DIR itself, not its subfolders) into
-# NAME and checks at build time that every project #include "..." in DIR's files
-# names a file of DIR, of a module it depends on, or of a module that one
-# exports through its own DEPENDS. PRIVATE_DEPENDS are not passed on: the
+# NAME and checks at build time (cmake/check_includes.cmake) that every
+# #include in DIR's files that names a project file, quoted, in brackets or
+# relative, names a file of DIR, of a module it depends on, or of a module that
+# one exports through its own DEPENDS. PRIVATE_DEPENDS are not passed on: the
 # registry depends privately on every family, so what depends on the registry
 # still cannot include a family. That is how a family's folder is kept from
 # including the oracle or another family, and the window from including a family.
@@ -30,6 +31,7 @@ function(gridcull_module)
   endif()
   file(${glob} sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.cpp)
   file(${glob} headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${M_DIR}/*.h)
+  set(checked ${sources} ${headers})  # excluded files are checked all the same
   foreach(excluded IN LISTS M_EXCLUDE)
     list(REMOVE_ITEM sources ${PROJECT_SOURCE_DIR}/${M_DIR}/${excluded})
   endforeach()
@@ -65,13 +67,16 @@ function(gridcull_module)
   list(REMOVE_DUPLICATES exported)
   set_target_properties(${M_NAME} PROPERTIES GRIDCULL_EXPORTED_DIRS "${exported}")
 
-  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${M_NAME}.includes-checked)
+  # The stamp's name carries the allowed folders, so that narrowing a module's
+  # dependencies checks it again even when none of its files changed.
+  string(MD5 allowed_hash "${allowed}")
+  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${M_NAME}.includes-${allowed_hash}.checked)
   add_custom_command(
     OUTPUT ${stamp}
     COMMAND ${CMAKE_COMMAND} -DMODULE=${M_NAME} -DROOT=${PROJECT_SOURCE_DIR}
-            "-DALLOWED=${allowed}" "-DFILES=${sources};${headers}" -DSTAMP=${stamp}
+            "-DALLOWED=${allowed}" "-DFILES=${checked}" -DSTAMP=${stamp}
             -P ${PROJECT_SOURCE_DIR}/cmake/check_includes.cmake
-    DEPENDS ${sources} ${headers} ${PROJECT_SOURCE_DIR}/cmake/check_includes.cmake
+    DEPENDS ${checked} ${PROJECT_SOURCE_DIR}/cmake/check_includes.cmake
     COMMENT "Checking ${M_NAME}'s includes against its dependencies"
     VERBATIM)
   add_custom_target(${M_NAME}_includes DEPENDS ${stamp})

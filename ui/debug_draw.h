@@ -1,8 +1,8 @@
 // The debug-draw interface every family's overlay is written against, after
 // Jolt Physics' DebugRenderer: the overlay emits triangles, lines and text
-// labels, and the rectangles, outlines, dashes, hatches, polygons, voxels and
-// image cells built on them, each with a Paint from the one palette
-// (ui/palette.h). It never sees OpenGL: the app draws what it emitted
+// labels, and the rectangles, outlines, dashes, hatches, polygons and voxels
+// built on them (an image cell is a rectangle from ImageFrame::pixelsToView),
+// each with a Paint from the one palette (ui/palette.h). It never sees OpenGL: the app draws what it emitted
 // (app/gl_debug_draw.h) and tests read it back from a DebugDrawBatch.
 //
 // Two spaces:

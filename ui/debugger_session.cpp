@@ -10,8 +10,6 @@ namespace gridcull {
 
 namespace {
 
-constexpr const char* kOracleName = "exact";
-
 bool makeCullers(const Scene& scene, const std::string& algo, const KnobValues& knobs,
                  std::unique_ptr<Culler>& culler, std::unique_ptr<Culler>& exact,
                  std::string& error) {
@@ -22,8 +20,8 @@ bool makeCullers(const Scene& scene, const std::string& algo, const KnobValues& 
     // capturing it, the oracle does not.
     culler->setDebugCapture(true);
     exact.reset();
-    if (algo != kOracleName) {
-        exact = makeCuller(kOracleName, knobs, error);
+    if (algo != referenceAlgorithm()) {
+        exact = makeCuller(referenceAlgorithm(), knobs, error);
         if (!exact) return false;
     }
     return true;

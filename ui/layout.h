@@ -6,7 +6,7 @@
 namespace gridcull {
 
 // Window pixels (x, y, size); not culling's PixelRect, which is an inclusive
-// rectangle of an image's pixels (culling/raster/screen_mapping.h).
+// rectangle of an image's pixels (culling/api/pixel_rect.h).
 struct WindowRect {
     int x = 0, y = 0, width = 0, height = 0;
     bool contains(double px, double py) const {

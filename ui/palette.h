@@ -1,8 +1,8 @@
-// The one palette every overlay, legend and panel swatch draws from: the
-// Okabe-Ito colours ("Color Universal Design"), told apart with every common
-// colour-vision deficiency, and a few greys. A family's overlay picks swatches by
-// name (ui/debug_draw.h), so colours mean the same across families and the
-// window can key them in one legend.
+// The one palette the families' overlays (ui/debug_draw.h), the object states
+// and the panels' swatches draw from: the Okabe-Ito colours ("Color Universal
+// Design"), told apart with every common colour-vision deficiency, and a few
+// greys. A family's overlay picks swatches by name, so a colour reads the same
+// in every family's overlay and legend.
 #pragma once
 #include <cstdint>
 
@@ -16,7 +16,7 @@ struct Rgb {
 enum class Swatch : uint8_t {
     Blue,        // Okabe-Ito blue: visible objects
     SkyBlue,     // hidden objects (in the PVS, not seen); picked things
-    Vermillion,  // false culls, and nothing else in the scene view
+    Vermillion,     // false culls
     Yellow,      // the culling camera
     Orange,
     BluishGreen,

@@ -17,10 +17,13 @@ float seriesMax(const std::vector<float>& values, int count) {
     return m;
 }
 
-void row(const char* name, const char* format, double value, ImU32 color = 0) {
+// `tooltip`, when given, shows over the name: what the row counts.
+void row(const char* name, const char* format, double value, ImU32 color = 0,
+         const char* tooltip = nullptr) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::TextUnformatted(name);
+    if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
     ImGui::TableSetColumnIndex(1);
     if (color) ImGui::PushStyleColor(ImGuiCol_Text, color);
     ImGui::Text(format, value);
@@ -82,7 +85,8 @@ void drawStatsPanel(const FrameSnapshot& snapshot, StatsPanelState& state) {
         }
         for (int c = 0; c < kCounterCount; ++c) {
             if (result.stats.has(Counter(c)))
-                row(counterName(Counter(c)), "%.0f", double(result.stats.get(Counter(c))));
+                row(counterName(Counter(c)), "%.0f", double(result.stats.get(Counter(c))), 0,
+                    counterMeaning(Counter(c)));
         }
         ImGui::EndTable();
     }

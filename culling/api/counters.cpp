@@ -16,12 +16,15 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
     {Counter::ObjectUpdates, "object_updates",
      "moving objects written into the culler's spatial structure this frame"},
     {Counter::PixelQueries, "pixel_queries",
-     "reads of pixels from the culler's image to decide an occlusion test"},
+     "reads of pixels from the culler's image (a read-back each on a GPU), to decide an "
+     "occlusion test or to refresh cells after a draw"},
     {Counter::NodesVisited, "nodes_visited",
      "hierarchy nodes the traversal took up, frustum-culled ones included"},
     {Counter::TrianglesDrawn, "triangles_drawn",
      "triangles of the objects the culler drew into its own image"},
-    {Counter::ObjectsTested, "objects_tested", "objects looked at one by one this frame"},
+    {Counter::ObjectsTested, "objects_tested",
+     "objects examined one by one this frame (against the frustum, or drawn by the oracle: "
+     "those it rejects whole by depth or screen bounds are not)"},
     {Counter::PixelsSampled, "pixels_sampled", "pixels (3D) or rays (2D) the oracle evaluated"},
     {Counter::OcclusionTests, "occlusion_tests",
      "bounding volumes tested for occlusion against the culler's image"},

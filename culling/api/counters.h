@@ -6,12 +6,13 @@
 // Words that sound alike mean one thing each:
 //   occlusion_tests  bounding volumes tested for occlusion against an image
 //                    (one decision each, however it is reached);
-//   pixel_queries    reads of pixels from that image to decide a test (a
-//                    read-back each on a GPU), the expensive part of a test;
+//   pixel_queries    reads of pixels from that image (a read-back each on a
+//                    GPU), to decide a test or to refresh cells after a draw;
 //   cell_updates     the pixel queries that read a whole grid cell to refresh
 //                    its state, a subset of pixel_queries.
 // A counter is added here with its meaning when an algorithm first reports it,
-// never ahead of one.
+// never ahead of one (a registry test checks that some algorithm reports each).
+// `gridcull counters` prints the table.
 #pragma once
 #include <array>
 #include <cstddef>

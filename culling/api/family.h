@@ -43,6 +43,9 @@ struct FamilyEntry {
     std::vector<AlgorithmEntry> algorithms;
     std::vector<Knob> knobs;   // its options (its KnobTable's knobs())
     bool draws_image = false;  // its cullers take a CullerRequest::target
+    // The reference every culler is checked against (the exact oracle): its first
+    // algorithm runs beside the selected one, and its knobs apply to every run.
+    bool reference = false;
     // Makes the culler of request.algorithm. Never fails for its own algorithms.
     std::function<std::unique_ptr<Culler>(CullerRequest& request)> make;
 };

@@ -3,8 +3,8 @@
 // struct of its own and describes each member once, in a KnobTable: the flag,
 // the range, the help, and the member it sets (its default is the struct's).
 // That one description drives the command line's flags and their help, the
-// checking of values, bench's NAME:FLAG=VALUE entries, the window's controls
-// and the knob table of docs/LIMITS.md.
+// checking of values (the window's too), bench's NAME:FLAG=VALUE entries and
+// the knob table of docs/LIMITS.md.
 //
 // Values travel between those places as KnobValues: the values set so far, by
 // flag; a family reads its struct out of them with its table. Flags start with

@@ -1,6 +1,6 @@
 // The scene file's top level: format, dimensions, world, grid, time, seed and
 // camera, then objects and generators (scene_loader_objects.cpp,
-// scene_loader_generators.cpp), ids, and random walks.
+// scene_generators_read.cpp), ids, and random walks.
 #include "culling/io/scene_loader.h"
 
 #include <algorithm>

@@ -129,7 +129,7 @@ public:
     void configure(int width, int height, int cell_size, LazyGridVariant variant,
                    LazyGridUpdate update, const LazyGridExtensions& extensions);
     // Every cell completely free / zfar = zmax, nothing outdated; counters zeroed.
-    // `pixels` answers the pixel-level queries (culling/raster/image_target.h) and must
+    // `pixels` answers the pixel-level queries (culling/api/image_target.h) and must
     // be cleared alongside; it must outlive the frame. O(cells).
     void begin(const PixelQueries* pixels);
 

@@ -34,7 +34,7 @@ const KnobTable<LazyGridOptions>& lazyGridKnobs() {
                     kMaxImageResolution, "oracle", "the --oracle-res value",
                     "pixels on the long side of the grid's image; below the oracle's, an "
                     "object seen only between its pixel centres may be dropped"),
-        knob("lazy-cell-size", &LazyGridOptions::cell_size, 1, kMaxLazyCellSize,
+        knob(kLazyCellSizeFlag, &LazyGridOptions::cell_size, 1, kMaxLazyCellSize,
              "cell side in pixels; smaller: more cells to read, fewer pixels per query"),
         knob("lazy-prob", &LazyGridOptions::probability_threshold, 0.0, 1.0,
              "section 6: rate a cell free without a pixel query while less than this "

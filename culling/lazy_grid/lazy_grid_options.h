@@ -11,6 +11,8 @@ namespace gridcull {
 // the image is one cell).
 constexpr int kMinLazyResolution = 16;
 constexpr int kMaxLazyCellSize = 1024;
+// The cell size's flag, which the window's cell-size slider sets too.
+constexpr const char* kLazyCellSizeFlag = "lazy-cell-size";
 
 struct LazyGridOptions {
     // Pixels on the long side of the image, the other side from the camera's

@@ -1,8 +1,10 @@
 // `exact`: the reference visible set. Every conservative culler (vfc and every
 // occlusion-culling family) is tested against it: its PVS must contain every id
-// this oracle reports at the same frame. It shares no code with any culling
-// algorithm (only the scene, the camera and culling/scene/ray_intersect.h), keeps no
-// state between frames, and never over-estimates by design.
+// this oracle reports at the same frame. It shares no algorithm's code: only the
+// scene, the camera, culling/scene/ray_intersect.h and the shared rasterizer
+// (culling/raster/), which image-space cullers use too and which is tested on
+// its own against a per-pixel ray cast. It keeps no state between frames, and
+// never over-estimates by design.
 //
 // 3D: an object-ID buffer (culling/raster/id_depth_buffer.h) of
 // OracleOptions::resolution (--oracle-res) pixels on the long side, the other side from

@@ -28,6 +28,7 @@ FamilyEntry oracleFamily() {
     family.title = "Exact visibility oracle";
     family.algorithms = {{"exact", kRunsBoth, "the exact visible set, the reference"}};
     family.knobs = oracleKnobs().knobs();
+    family.reference = true;
     family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
         return std::make_unique<ExactOracle>(oracleOptions(*request.knobs));
     };

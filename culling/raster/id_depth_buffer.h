@@ -1,5 +1,8 @@
-// The 3D half of the exact oracle (culling/oracle/exact_oracle.h): an object-ID buffer
-// with a depth per pixel, filled by exact per-pixel intersection.
+// The shared software rasterizer: an object-ID buffer with a depth per pixel,
+// filled by exact per-pixel intersection. The exact oracle's 3D half
+// (culling/oracle/exact_oracle.h) and the software image target of the
+// image-space cullers (software_image_target.h) are its clients; its own
+// brute-force tests (tests/culling/raster/) check it pixel by pixel.
 //
 // Pixel (px, py), px in [0, width), py in [0, height) from the top, is sampled at
 // its centre: the ray eye + s * (forward + u*right + v*up) with

@@ -1,5 +1,5 @@
-// Pixel-range helpers of the exact oracle's ID buffer (exact_oracle_id_buffer.h):
-// turning continuous pixel coordinates into clamped integer ranges.
+// Pixel-range helpers of the shared rasterizer (id_depth_buffer.h): turning
+// continuous pixel coordinates into clamped integer ranges.
 #pragma once
 #include <algorithm>
 #include <cmath>

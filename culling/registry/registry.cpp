@@ -37,24 +37,48 @@ const std::vector<FamilyEntry>& families() {
 }
 
 bool registerFamily(FamilyEntry entry, std::string& error) {
-    if (entry.algorithms.empty() || !entry.make) {
-        error = "family '" + entry.id + "' needs at least one algorithm and a factory";
+    const std::string family = "family '" + entry.id + "': ";
+    if (entry.id.empty() || entry.algorithms.empty() || !entry.make) {
+        error = family + "needs an id, at least one algorithm and a factory";
         return false;
     }
     if (findFamily(entry.id)) {
         error = "a family '" + entry.id + "' is registered already";
         return false;
     }
-    for (const AlgorithmEntry& a : entry.algorithms)
-        if (familyOfAlgorithm(a.name)) {
-            error = "the algorithm name '" + a.name + "' is taken";
+    for (size_t i = 0; i < entry.algorithms.size(); ++i) {
+        const AlgorithmEntry& a = entry.algorithms[i];
+        bool repeated = false;
+        for (size_t j = 0; j < i; ++j) repeated = repeated || entry.algorithms[j].name == a.name;
+        if (a.name.empty() || repeated || familyOfAlgorithm(a.name)) {
+            error = family + "the algorithm name '" + a.name + "' is taken";
             return false;
         }
-    for (const Knob& k : entry.knobs)
-        if (findKnob(k.flag)) {
-            error = "the knob --" + k.flag + " is taken";
+        if (a.name.size() > 3 && a.name.compare(a.name.size() - 3, 3, "-gl") == 0) {
+            error = family + "'" + a.name + "': names ending in -gl are the OpenGL variants'";
             return false;
         }
+        if ((a.dimensions & kRunsBoth) == 0 || (a.dimensions & ~kRunsBoth) != 0) {
+            error = family + "'" + a.name + "' must run on 2D or 3D scenes or both";
+            return false;
+        }
+    }
+    // A knob's flag starts with the family's prefix, so that no two families'
+    // knobs, nor a knob and a command's own option, ever share a name.
+    const std::string prefix = entry.id.substr(0, entry.id.find('-')) + "-";
+    for (size_t i = 0; i < entry.knobs.size(); ++i) {
+        const Knob& k = entry.knobs[i];
+        bool repeated = false;
+        for (size_t j = 0; j < i; ++j) repeated = repeated || entry.knobs[j].flag == k.flag;
+        if (k.flag.compare(0, prefix.size(), prefix) != 0 || k.flag.size() == prefix.size()) {
+            error = family + "the knob --" + k.flag + " must start with '" + prefix + "'";
+            return false;
+        }
+        if (repeated || findKnob(k.flag)) {
+            error = family + "the knob --" + k.flag + " is taken";
+            return false;
+        }
+    }
     table().families.push_back(std::move(entry));
     return true;
 }
@@ -135,6 +159,13 @@ const FamilyEntry* familyOfKnob(std::string_view flag) {
     return nullptr;
 }
 
+const std::string& referenceAlgorithm() {
+    for (const FamilyEntry& f : families())
+        if (f.reference) return f.algorithms.front().name;
+    static const std::string none;
+    return none;
+}
+
 int referenceResolution(const KnobValues& knobs) {
     return oracleOptions(knobs).resolution;
 }
@@ -158,7 +189,9 @@ std::unique_ptr<Culler> makeCuller(std::string_view name, const KnobValues& knob
     request.knobs = &knobs;
     request.reference_resolution = referenceResolution(knobs);
     request.target = std::move(target);
-    return family->make(request);
+    std::unique_ptr<Culler> culler = family->make(request);
+    if (!culler) error = "family '" + family->id + "' made no culler for " + std::string(name);
+    return culler;
 }
 
 }  // namespace gridcull

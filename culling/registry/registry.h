@@ -14,7 +14,9 @@
 
 namespace gridcull {
 
-// Every family, in the order help and the window list them.
+// Every family, in the order help and the window list them. References and
+// pointers into it (entries, algorithms, knobs) stay valid until the next
+// registerFamily or unregisterFamily, which tests call before anything else.
 const std::vector<FamilyEntry>& families();
 
 // Adds a family after the built-in ones (tests add a test-only family this
@@ -44,6 +46,10 @@ std::vector<const Knob*> allKnobs();
 const Knob* findKnob(std::string_view flag);
 // The family that owns the knob `flag`, or nullptr.
 const FamilyEntry* familyOfKnob(std::string_view flag);
+
+// The reference algorithm (the exact oracle, "exact"): the first algorithm of
+// the family marked `reference`.
+const std::string& referenceAlgorithm();
 
 // The oracle's image side for these values: what image-space families match by
 // default (CullerRequest::reference_resolution).

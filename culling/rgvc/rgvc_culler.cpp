@@ -140,9 +140,9 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     out.pvs.clear();
     out.stats = CullStats{};
     if (scene.dimensions != 2) {
-        // 3D is not implemented (the registry offers rgvc for 2D scenes only):
-        // view-frustum culling of the bounds, which is conservative, for callers
-        // that cull anyway.
+        // The registry offers rgvc for 2D scenes only; a caller that culls a 3D
+        // scene anyway gets view-frustum culling of the bounds, which is
+        // conservative.
         for (const SceneObject& object : scene.objects)
             if (boxMayIntersectFrustum(scene.boundsAt(object, t), camera))
                 out.pvs.push_back(object.id);

@@ -39,9 +39,8 @@
 //  - A TBV whose digital circle would leave the grid is not written into T but
 //    kept in a list and revealed when its disc touches the frustum (a ray could
 //    otherwise reach the object around the outside of the grid).
-//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the paper suggests) so
-//  that the
-//    circle leaves the viewer's voxel outside; when even one frame's validity
+//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the
+//    paper suggests) so that the circle leaves the viewer's voxel outside; when even one frame's validity
 //    would not, the TBV is written filled. When the viewer's voxel jumps by more
 //    than one voxel between frames (a teleport: the 8-connected path condition
 //    fails), every boundary TBV whose curve may enclose the new viewer voxel is
@@ -94,7 +93,6 @@ public:
     const DebugSnapshot* debugSnapshot() const override {
         return snapshot_.valid ? &snapshot_ : nullptr;
     }
-    bool snapshotEnabled() const { return snapshot_enabled_; }
     const RgvcSnapshot& snapshot() const { return snapshot_; }
     // The grid this culler uses (the scene's, or the resolution override).
     const RegularGrid& grid() const { return grid_; }

@@ -46,6 +46,12 @@ TEST(CliAlgoVariants, BadEntriesAreNamedWithWhatWasExpected) {
     EXPECT_FALSE(parseAlgoVariants("lazy-grid:cell-size=8", {}, variants, error));
     EXPECT_FALSE(parseAlgoVariants("rgvc:grid-res=64", {}, variants, error));
     EXPECT_FALSE(parseAlgoVariants("vfc-gl", {}, variants, error));  // draws no image
+    // Another family's knob would do nothing for the entry; the oracle's may go with any.
+    EXPECT_FALSE(parseAlgoVariants("vfc:lazy-cell-size=8", {}, variants, error));
+    EXPECT_NE(error.find("--lazy-cell-size is a knob of"), std::string::npos) << error;
+    EXPECT_TRUE(parseAlgoVariants("lazy-grid-gl:lazy-cell-size=8,rgvc:oracle-rays=4096", {},
+                                  variants, error))
+        << error;
     EXPECT_FALSE(parseAlgoVariants("", {}, variants, error));
 }
 

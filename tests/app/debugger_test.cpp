@@ -29,6 +29,8 @@ bool offers(const Debugger& debugger, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+void select(Debugger& debugger, const std::string& name);
+
 class DebuggerTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -65,17 +67,45 @@ TEST_F(DebuggerTest, OffersOnlyTheAlgorithmsOfTheScenesDimension) {
     EXPECT_FALSE(offers(debugger, "lazy-grid"));
 
     // Picking rgvc from the list brings its view and snapshot, and clears the note.
-    UiActions actions;
-    const std::vector<std::string>& names = debugger.offeredAlgorithms();
-    actions.algorithm.select_algo =
-        int(std::find(names.begin(), names.end(), "rgvc") - names.begin());
-    debugger.apply(actions);
-    EXPECT_EQ(debugger.session().algo(), "rgvc");
+    select(debugger, "rgvc");
     EXPECT_TRUE(debugger.note().empty());
     ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
     EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "rgvc");
     debugger.drawScene(computeLayout(640, 360, false), 360);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+void select(Debugger& debugger, const std::string& name) {
+    UiActions actions;
+    const std::vector<std::string>& names = debugger.offeredAlgorithms();
+    actions.algorithm.select_algo = int(std::find(names.begin(), names.end(), name) - names.begin());
+    debugger.apply(actions);
+    ASSERT_EQ(debugger.session().algo(), name);
+}
+
+// A family's view keeps its state (here the object --lazy-object picked) when
+// another culler is selected and this one again; the flag's pick belongs to the
+// scene it named an object of, so another scene starts without it.
+TEST_F(DebuggerTest, FamilyViewStateSurvivesSwitchingAndFlagsStayWithTheirScene) {
+    options_.algo = "lazy-grid";
+    const Scene forest = load("forest-3d.json");
+    options_.view_flags.set("lazy-object", 2300);
+    Debugger debugger(options_);
+    std::string error;
+    ASSERT_TRUE(debugger.init(forest, error)) << error;
+    const int picked = forest.indexOf(2300);
+    ASSERT_GE(picked, 0);
+    EXPECT_EQ(debugger.outlinedObject(), picked);
+    select(debugger, "vfc");
+    EXPECT_EQ(debugger.outlinedObject(), -1) << "vfc's family has no view: nothing under the mouse";
+    select(debugger, "lazy-grid-z");  // the same family: the same view
+    EXPECT_EQ(debugger.outlinedObject(), picked);
+    debugger.openSceneFile(test::sourcePath("scenes/city-3d.json"));
+    EXPECT_EQ(debugger.session().algo(), "lazy-grid-z");
+    EXPECT_EQ(debugger.outlinedObject(), -1) << "a pick of the old scene is forgotten";
+    select(debugger, "vfc");
+    select(debugger, "lazy-grid");
+    EXPECT_EQ(debugger.outlinedObject(), -1) << "the flag is not applied to another scene";
 }
 
 TEST_F(DebuggerTest, RefusesAnAlgorithmThatDoesNotRunOnTheScene) {

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "culling/lazy_grid/lazy_grid_options.h"
+
 namespace gridcull {
 
 namespace {
@@ -63,7 +65,7 @@ void cellSizeSlider(const LazyGridSnapshot& lazy, LazyGridPanelState& state, Fam
         ImGui::SetTooltip("Cell side in pixels (--lazy-cell-size); re-runs up to this frame");
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         const int size = 1 << state.cell_size_log2;
-        if (size != lazy.cell_size) action.knobs.emplace_back("lazy-cell-size", size);
+        if (size != lazy.cell_size) action.knobs.emplace_back(kLazyCellSizeFlag, size);
     }
 }
 

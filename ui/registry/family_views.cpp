@@ -53,11 +53,21 @@ bool registerFamilyView(FamilyViewEntry entry, std::string& error) {
         error = "the view of family '" + entry.family + "' needs a factory";
         return false;
     }
-    for (const Knob& flag : entry.flags)
-        if (findViewFlag(flag.flag) || findKnob(flag.flag)) {
-            error = "the flag --" + flag.flag + " is taken";
+    // Like knobs, view flags start with the family's prefix and are unique.
+    const std::string prefix = entry.family.substr(0, entry.family.find('-')) + "-";
+    for (size_t i = 0; i < entry.flags.size(); ++i) {
+        const std::string& flag = entry.flags[i].flag;
+        bool repeated = false;
+        for (size_t j = 0; j < i; ++j) repeated = repeated || entry.flags[j].flag == flag;
+        if (flag.compare(0, prefix.size(), prefix) != 0 || flag.size() == prefix.size()) {
+            error = "the view flag --" + flag + " must start with '" + prefix + "'";
             return false;
         }
+        if (repeated || findViewFlag(flag) || findKnob(flag)) {
+            error = "the flag --" + flag + " is taken";
+            return false;
+        }
+    }
     table().views.push_back(std::move(entry));
     return true;
 }

@@ -12,6 +12,8 @@
 
 namespace gridcull {
 
+// Every family's view, in registry order; pointers into it stay valid until the
+// next registerFamilyView or unregisterFamilyView.
 const std::vector<FamilyViewEntry>& familyViews();
 // The entry of family `family` (a FamilyEntry::id), or nullptr.
 const FamilyViewEntry* findFamilyView(std::string_view family);

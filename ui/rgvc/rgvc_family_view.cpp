@@ -44,9 +44,11 @@ public:
     void pointer(const FamilyViewContext& context, const ViewPointer& pointer) override {
         voxel_hovered_ = pointer.over_view && context.scene->dimensions == 2;
         if (!voxel_hovered_) return;
-        const glm::ivec3 voxel = context.scene->grid.voxelOf(pointer.origin);
-        hovered_voxel_ = {voxel.x, voxel.y};
+        // The culler's grid (--rgvc-grid-res may differ from the scene's), which
+        // the overlay draws and the voxel description reads.
         const RgvcSnapshot* rgvc = snapshotOf(context);
+        const glm::ivec3 voxel = (rgvc ? rgvc->grid : context.scene->grid).voxelOf(pointer.origin);
+        hovered_voxel_ = {voxel.x, voxel.y};
         if (pointer.clicked && rgvc) view_.occluder = rgvcOccluderAt(*rgvc, hovered_voxel_);
     }
 

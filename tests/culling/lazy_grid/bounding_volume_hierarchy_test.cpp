@@ -1,5 +1,5 @@
-// The AABB hierarchy of the lazy occlusion grid (culling/bounding_volume_
-// hierarchy.h): every object in exactly one leaf, every box containing its
+// The AABB hierarchy of the lazy occlusion grid
+// (culling/lazy_grid/bounding_volume_hierarchy.h): every object in exactly one leaf, every box containing its
 // children and its objects' bounds at t, pre-order storage, refitting to moving
 // objects, and a rebuild once refitting has loosened the boxes enough.
 #include <vector>

@@ -75,7 +75,36 @@ TEST(Registry, KnobsAreUniqueAndNamedAfterTheirFamily) {
     EXPECT_EQ(findKnob("cell-size"), nullptr);
 }
 
+// Every counter of the table is reported by some algorithm of the registry: the
+// table holds no name ahead of its use.
+TEST(Registry, EveryCounterIsReportedBySomeAlgorithm) {
+    KnobValues knobs;
+    knobs.set("oracle-res", 64);
+    knobs.set("lazy-prob", 0.5);  // the probability rule reports its own counter
+    Scene flat = test::scene2d();
+    test::addSphere(flat, 1, {60, 50, 0}, 2);
+    flat.objects.back().motion.kind = MotionKind::Linear;  // TBVs come with motion
+    flat.objects.back().motion.velocity = {1, 0, 0};
+    flat.objects.back().motion.max_speed = 1;
+    flat.finalize();
+    Scene deep = test::scene3d();
+    test::addSphere(deep, 1, {50, 50, 60}, 2);
+    deep.finalize();
+    uint32_t reported = 0;
+    for (const Scene* scene : {&flat, &deep})
+        for (const std::string& name : algorithmNames(scene->dimensions)) {
+            auto culler = test::makeOrDie(name, knobs);
+            culler->reset(*scene);
+            FrameResult out;
+            culler->cull(*scene, cameraAt(*scene, 0.0), 0.0, out);
+            reported |= out.stats.present;
+        }
+    for (int c = 0; c < kCounterCount; ++c)
+        EXPECT_TRUE((reported >> c) & 1u) << counterName(Counter(c)) << " is reported by none";
+}
+
 TEST(Registry, TheReferenceResolutionIsTheOracles) {
+    EXPECT_EQ(referenceAlgorithm(), "exact");
     KnobValues knobs;
     EXPECT_EQ(referenceResolution(knobs), 1024);
     knobs.set("oracle-res", 640);
@@ -126,11 +155,26 @@ TEST(Registry, AddsAFamilyWithNewNamesOnly) {
     EXPECT_NE(error.find("family 'rgvc'"), std::string::npos) << error;
     EXPECT_FALSE(registerFamily(toyFamily("toy", "vfc", ""), error));
     EXPECT_NE(error.find("'vfc' is taken"), std::string::npos) << error;
-    EXPECT_FALSE(registerFamily(toyFamily("toy", "toy-a", "lazy-cell-size"), error));
+    // A family named like another may not take that one's knob.
+    EXPECT_FALSE(registerFamily(toyFamily("lazy-toy", "toy-a", "lazy-cell-size"), error));
     EXPECT_NE(error.find("--lazy-cell-size is taken"), std::string::npos) << error;
     FamilyEntry empty = toyFamily("toy", "toy-a", "");
     empty.algorithms.clear();
     EXPECT_FALSE(registerFamily(empty, error));
+    // A knob names its family; names, dimensions and -gl are checked.
+    EXPECT_FALSE(registerFamily(toyFamily("toy", "toy-a", "cells"), error));
+    EXPECT_NE(error.find("--cells must start with 'toy-'"), std::string::npos) << error;
+    EXPECT_FALSE(registerFamily(toyFamily("toy", "toy-a", "frames"), error));
+    FamilyEntry twice = toyFamily("toy", "toy-a", "toy-knob");
+    twice.knobs.push_back(twice.knobs.front());
+    EXPECT_FALSE(registerFamily(twice, error));
+    EXPECT_NE(error.find("--toy-knob is taken"), std::string::npos) << error;
+    EXPECT_FALSE(registerFamily(toyFamily("toy", "toy-a-gl", ""), error));
+    EXPECT_NE(error.find("-gl"), std::string::npos) << error;
+    FamilyEntry nowhere = toyFamily("toy", "toy-a", "");
+    nowhere.algorithms[0].dimensions = 0;
+    EXPECT_FALSE(registerFamily(nowhere, error));
+    EXPECT_NE(error.find("must run on 2D or 3D scenes or both"), std::string::npos) << error;
 
     const size_t before = families().size();
     ASSERT_TRUE(registerFamily(toyFamily("toy", "toy-a", "toy-knob"), error)) << error;

@@ -1,11 +1,13 @@
-// The lazy occlusion grid cullers against the brute-force reference
+// Every image-space culler (each algorithm of a family that draws an image:
+// today the lazy occlusion grids) against the brute-force reference
 // (tests/culling/oracle/oracle_brute_force.h), not only against the exact oracle:
 // the reference casts every pixel centre's ray against every object with no
-// screen bounds, no ordering and no skipping, so a bug that the oracle and the
-// lazy grid share through their common ID buffer (culling/raster/id_depth_buffer.h)
-// cannot hide here. Frame by frame, every id the reference requires (the unique
-// nearest object at some pixel centre) must be in each culler's PVS, at the same
-// image size (--oracle-res, which --lazy-res follows).
+// screen bounds, no ordering and no skipping, so a bug that the oracle and an
+// image-space culler share through their common ID buffer
+// (culling/raster/id_depth_buffer.h) cannot hide here. Frame by frame, every id
+// the reference requires (the unique nearest object at some pixel centre) must
+// be in each culler's PVS, at the same image size (--oracle-res, which an
+// image-space family follows by default).
 // Small images and a modest number of scenes keep it fast; GRIDCULL_SEED=N
 // replays one scene.
 #include <algorithm>
@@ -19,6 +21,7 @@
 
 #include "culling/api/culler.h"
 #include "culling/oracle/oracle_options.h"
+#include "culling/registry/registry.h"
 #include "tests/common/oracle_test_scenes.h"
 #include "tests/common/test_seeds.h"
 #include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
@@ -34,9 +37,13 @@ struct Totals {
     long long frames = 0, required = 0, pvs = 0, misses = 0;
 };
 
-TEST(LazyGridBruteForce, EveryCullerKeepsEveryObjectTheRayCastRequires) {
-    const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
-                                            "busy-grid-tight"};
+TEST(ImageSpaceBruteForce, EveryCullerKeepsEveryObjectTheRayCastRequires) {
+    std::vector<std::string> names;
+    for (const FamilyEntry& family : families())
+        if (family.draws_image)
+            for (const AlgorithmEntry& a : family.algorithms)
+                if (a.dimensions & kRuns3d) names.push_back(a.name);
+    ASSERT_FALSE(names.empty());
     KnobValues knobs;
     knobs.set("oracle-res", kResolution);
     OracleOptions reference_options;
