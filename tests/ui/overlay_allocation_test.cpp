@@ -1,49 +1,17 @@
 // "Hot per-frame paths do not allocate": once a family's overlay has been drawn
 // into the debug-draw batch, drawing it again (the window does every frame)
 // allocates nothing, for the rgvc and lazy grid overlays, with their optional
-// layers and a focused object on. Counted by replacing the global operator new
-// of this test binary; the counter runs only inside the measured draws.
-#include <atomic>
-#include <cstdlib>
-#include <new>
+// layers and a focused object on. Counted by tests/common/counting_new.h, which replaces the
+// global operator new of this test binary; the counter runs only inside the measured draws.
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "culling/io/scene_loader.h"
+#include "tests/common/counting_new.h"
 #include "ui/debug_draw.h"
 #include "ui/debugger_session.h"
 #include "ui/registry/family_views.h"
-
-// GCC 12 flags free() of operator new's memory once it inlines the pair; here
-// both sides are ours and use malloc / free.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1);
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    return ::operator new(size);
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace gridcull {
 namespace {
@@ -75,23 +43,21 @@ long allocationsOfRedraws(const char* scene_file, const char* algo, int frame,
     DebugDrawBatch batch;
     view->drawOverlay(context, overlay, batch);
     EXPECT_FALSE(batch.empty()) << algo << ": the overlay draws something";
-    g_allocations = 0;
+    test::startCounting();
     for (int k = 0; k < 2; ++k) {
         batch.clear();
-        g_counting = true;
         view->drawOverlay(context, overlay, batch);
-        g_counting = false;
     }
-    return g_allocations;
+    test::stopCounting();
+    return test::allocationCount();
 }
 
 TEST(OverlayAllocation, TheCounterSeesAnAllocation) {
-    g_allocations = 0;
-    g_counting = true;
+    test::startCounting();
     std::string* s = new std::string(100, 'x');
-    g_counting = false;
+    test::stopCounting();
     delete s;
-    EXPECT_GE(g_allocations, 1);
+    EXPECT_GE(test::allocationCount(), 1);
 }
 
 TEST(OverlayAllocation, RedrawingTheRgvcOverlayAllocatesNothing) {

@@ -1,58 +1,26 @@
 // "Hot per-frame paths do not allocate": once a lazy grid culler has seen a
 // scene's first frames, cull() allocates nothing (snapshots off), moving objects,
-// BVH refits and rebuilds included. Counted by replacing the global operator new
-// of this test binary; the counter runs only inside the measured frames.
-#include <atomic>
-#include <cstdlib>
-#include <new>
+// BVH refits and rebuilds included. Counted by tests/common/counting_new.h,
+// which replaces the global operator new of this test binary; the counter runs
+// only inside the measured frames.
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "culling/api/culler.h"
+#include "tests/common/counting_new.h"
 #include "tests/common/oracle_test_scenes.h"
 #include "tests/culling/lazy_grid/lazy_grid_random_scene.h"
-
-// GCC 12 flags free() of operator new's memory once it inlines the pair; here
-// both sides are ours and use malloc / free.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1);
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    return ::operator new(size);
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace gridcull {
 namespace {
 
 TEST(LazyGridAllocation, TheCounterSeesAnAllocation) {
-    g_allocations = 0;
-    g_counting = true;
+    test::startCounting();
     auto* v = new std::vector<int>(10);
-    g_counting = false;
+    test::stopCounting();
     delete v;
-    EXPECT_EQ(g_allocations, 2);  // the vector and its buffer
+    EXPECT_EQ(test::allocationCount(), 2);  // the vector and its buffer
 }
 
 TEST(LazyGridAllocation, SteadyFramesAllocateNothing) {
@@ -72,11 +40,10 @@ TEST(LazyGridAllocation, SteadyFramesAllocateNothing) {
             for (int frame = 3; frame < scene.frames; ++frame) {
                 const double t = scene.timeOfFrame(frame);
                 const Camera camera = cameraAt(scene, t);
-                g_allocations = 0;
-                g_counting = true;
+                test::startCounting();
                 culler->cull(scene, camera, t, result);
-                g_counting = false;
-                allocations += g_allocations;
+                test::stopCounting();
+                allocations += test::allocationCount();
             }
             EXPECT_EQ(allocations, 0) << name << " seed " << seed;
         }
