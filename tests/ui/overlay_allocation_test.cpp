@@ -1,8 +1,9 @@
 // "Hot per-frame paths do not allocate": once a family's overlay has been drawn
 // into the debug-draw batch, drawing it again (the window does every frame)
 // allocates nothing, for the rgvc and lazy grid overlays, with their optional
-// layers and a focused object on. Counted by tests/common/counting_new.h, which replaces the
-// global operator new of this test binary; the counter runs only inside the measured draws.
+// layers and a focused object on. Counted by tests/common/counting_new.h, which
+// replaces the global operator new of this test binary; the counter runs only
+// inside the measured draws.
 #include <string>
 
 #include <gtest/gtest.h>
