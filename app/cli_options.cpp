@@ -1,5 +1,6 @@
 #include "app/cli_options.h"
 
+#include <cctype>
 #include <cstdio>
 #include <sstream>
 

@@ -41,7 +41,8 @@ int prepare(const std::string& command, const WindowCommand& c, Scene& scene, Vi
         return usageError(command, "--frame " + std::to_string(c.frame) +
                                        " is past the scene's last frame " +
                                        std::to_string(scene.frames - 1));
-    printUnusedNotes(command, c.knobs, names);
+    // The window can switch to any culler later, so only a shot notes what is unused.
+    if (command == "shot") printUnusedNotes(command, c.knobs, names);
     view.algo = c.algo;
     view.width = int(c.width);
     view.height = int(c.height);
