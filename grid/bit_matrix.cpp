@@ -5,22 +5,25 @@
 
 namespace gridcull {
 
-void BitMatrix::resize(int width, int height) {
-    assert(width >= 0 && height >= 0);
+void BitMatrix::resize(int width, int height, int depth) {
+    assert(width >= 0 && height >= 0 && depth >= 1);
     width_ = width;
     height_ = height;
+    depth_ = depth;
+    rows_ = height * depth;
     words_per_row_ = (width + 63) / 64;
-    words_.assign(size_t(words_per_row_) * size_t(height), 0);
+    words_.assign(size_t(words_per_row_) * size_t(rows_), 0);
 }
 
 void BitMatrix::release() {
-    width_ = height_ = words_per_row_ = 0;
+    width_ = height_ = rows_ = words_per_row_ = 0;
+    depth_ = 1;
     std::vector<uint64_t>().swap(words_);
 }
 
 void BitMatrix::setRun(int y, int x0, int x1) {
     if (x0 > x1) return;
-    assert(y >= 0 && y < height_ && x0 >= 0 && x1 < width_);
+    assert(y >= 0 && y < rows_ && x0 >= 0 && x1 < width_);
     uint64_t* row = words_.data() + size_t(y) * size_t(words_per_row_);
     const int w0 = x0 >> 6, w1 = x1 >> 6;
     // Masks of the bits at and above x0, and at and below x1, within their words.
@@ -35,10 +38,24 @@ void BitMatrix::setRun(int y, int x0, int x1) {
     row[w1] |= high;
 }
 
+bool BitMatrix::allSet(int y, int x0, int x1) const {
+    if (x0 > x1) return true;
+    assert(y >= 0 && y < rows_ && x0 >= 0 && x1 < width_);
+    const uint64_t* row = words_.data() + size_t(y) * size_t(words_per_row_);
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    const uint64_t low = ~uint64_t(0) << (unsigned(x0) & 63u);
+    const uint64_t high = ~uint64_t(0) >> (63u - (unsigned(x1) & 63u));
+    if (w0 == w1) return (row[w0] & (low & high)) == (low & high);
+    if ((row[w0] & low) != low || (row[w1] & high) != high) return false;
+    for (int w = w0 + 1; w < w1; ++w)
+        if (row[w] != ~uint64_t(0)) return false;
+    return true;
+}
+
 void BitMatrix::clearAll() { std::fill(words_.begin(), words_.end(), 0); }
 
 void BitMatrix::copyFrom(const BitMatrix& other) {
-    assert(other.width_ == width_ && other.height_ == height_);
+    assert(other.width_ == width_ && other.rows_ == rows_);
     std::copy(other.words_.begin(), other.words_.end(), words_.begin());
 }
 

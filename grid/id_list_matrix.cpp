@@ -4,10 +4,11 @@
 
 namespace gridcull {
 
-void IdListMatrix::resize(int width, int height, bool track_touched) {
-    assert(width >= 0 && height >= 0);
+void IdListMatrix::resize(int width, int height, bool track_touched, int depth) {
+    assert(width >= 0 && height >= 0 && depth >= 1);
     width_ = width;
     height_ = height;
+    rows_ = height * depth;
     track_touched_ = track_touched;
     std::vector<int32_t>().swap(heads_);  // re-allocated lazily by add()
     std::vector<Node>().swap(nodes_);
@@ -18,7 +19,7 @@ void IdListMatrix::resize(int width, int height, bool track_touched) {
 }
 
 void IdListMatrix::release() {
-    width_ = height_ = 0;
+    width_ = height_ = rows_ = 0;
     std::vector<int32_t>().swap(heads_);
     std::vector<Node>().swap(nodes_);
     std::vector<int32_t>().swap(touched_);
@@ -28,8 +29,8 @@ void IdListMatrix::release() {
 }
 
 void IdListMatrix::add(int x, int y, int32_t id) {
-    assert(x >= 0 && y >= 0 && x < width_ && y < height_);
-    if (heads_.empty()) heads_.assign(size_t(width_) * size_t(height_), -1);
+    assert(x >= 0 && y >= 0 && x < width_ && y < rows_);
+    if (heads_.empty()) heads_.assign(size_t(width_) * size_t(rows_), -1);
     int32_t n;
     if (free_head_ >= 0) {
         n = free_head_;

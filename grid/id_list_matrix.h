@@ -1,5 +1,6 @@
-// A sparse 2D matrix of id lists, one list per voxel: the identifiers matrix I
-// and the TBV matrix T of Batagelo & Wu (section 3). Only voxels that hold ids
+// A sparse matrix of id lists, one list per voxel: the identifiers matrix I
+// and the TBV matrix T of Batagelo & Wu (section 3), 2D, or 3D as the 2D matrix
+// of height * depth rows (voxel (x, y, z) in row y + z * height, as BitMatrix). Only voxels that hold ids
 // use list storage: each voxel keeps a 4-byte head index into one pool of
 // (id, next) nodes shared by the whole matrix, and removed nodes go to a free
 // list, so after the first frames adding and removing ids allocates nothing.
@@ -26,12 +27,18 @@ public:
     // back on the next add()). `track_touched` keeps a list of voxels
     // written since the last clear() so that clear() costs only those; use it for
     // matrices cleared every frame, not for ones that mostly add and remove.
-    void resize(int width, int height, bool track_touched);
+    void resize(int width, int height, bool track_touched, int depth = 1);
     // Frees all storage.
     void release();
 
     int width() const { return width_; }
     int height() const { return height_; }
+    int depth() const { return rows_ / (height_ > 0 ? height_ : 1); }
+    // The row that holds voxels (*, y, z).
+    int row(int y, int z) const {
+        assert(y >= 0 && y < height_ && z >= 0 && y + z * height_ < rows_);
+        return y + z * height_;
+    }
 
     void add(int x, int y, int32_t id);
     // Removes one occurrence of id from voxel (x, y); false when it is not there.
@@ -40,7 +47,7 @@ public:
     void clear();
 
     bool empty(int x, int y) const {
-        assert(x >= 0 && y >= 0 && x < width_ && y < height_);
+        assert(x >= 0 && y >= 0 && x < width_ && y < rows_);
         return heads_.empty() || heads_[index(x, y)] < 0;
     }
     // Calls fn(id) for every id in voxel (x, y).
@@ -68,6 +75,7 @@ private:
 
     int width_ = 0;
     int height_ = 0;
+    int rows_ = 0;  // height * depth
     bool track_touched_ = false;
     std::vector<int32_t> heads_;  // -1: empty; allocated on the first add()
     std::vector<Node> nodes_;

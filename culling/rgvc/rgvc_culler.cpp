@@ -1,5 +1,5 @@
 // `rgvc`: regular-grid culling after Batagelo & Wu (SIBGRAPI 2002), sections 3
-// and 4; the frame loop, the PVS and the snapshot. rgvc_culler.h lists the
+// to 5; the frame loop, the PVS and the snapshot, for both dimensions. rgvc_culler.h lists the
 // steps, where they live and where this departs from the paper.
 #include "culling/rgvc/rgvc_culler.h"
 
@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "culling/baseline/frustum_tests.h"
+#include "culling/scene/mesh_interior.h"
 #include "grid/chess_ring.h"
 
 namespace gridcull {
@@ -41,7 +42,37 @@ double maxSpeedOf(const SceneObject& object) {
     return speed;
 }
 
-// The radius around the object's anchor that holds the whole shape.
+// Where the object can ever be: linear and random motion fold back at the
+// world's walls (Scene::displacementAt), so on each axis where its t = 0 bounds
+// fit inside the world it stays in the world, and on the others it stays
+// still; a keyframed object stays in the box of its bounds at the keys.
+Aabb reachOf(const SceneObject& object, const Aabb& world, int dimensions) {
+    const Aabb& b = object.bounds;
+    switch (object.motion.kind) {
+        case MotionKind::Static:
+            return b;
+        case MotionKind::Keyframes: {
+            if (object.motion.keys.empty()) return b;
+            Aabb reach = b.translated(object.motion.keys.front().position - object.anchor);
+            for (const PositionKey& key : object.motion.keys)
+                reach.merge(b.translated(key.position - object.anchor));
+            return reach;
+        }
+        case MotionKind::Linear:
+        case MotionKind::Random:
+            break;
+    }
+    Aabb reach = b;
+    for (int a = 0; a < dimensions; ++a) {
+        const double lo = world.min[a] - b.min[a], hi = world.max[a] - b.max[a];
+        if (lo > 0.0 || hi < 0.0 || !(hi > lo)) continue;
+        reach.min[a] = world.min[a];
+        reach.max[a] = world.max[a];
+    }
+    return reach;
+}
+
+// The radius around the object's anchor that holds the whole shape (2D).
 double boundingRadiusOf(const SceneObject& object) {
     const glm::dvec3 a = object.anchor;
     switch (object.shape) {
@@ -76,38 +107,61 @@ RgvcCuller::RgvcCuller(const RgvcOptions& options) : options_(options) {
 
 void RgvcCuller::reset(const Scene& scene) {
     ready_ = true;
+    dimensions_ = scene.dimensions;
     object_count_ = scene.objects.size();
     frame_ = 0;
     last_t_ = 0.0;
     grid_ = scene.grid;
     snapshot_ = RgvcSnapshot{};
-    if (scene.dimensions != 2) return;
+    if (dimensions_ != 2 && dimensions_ != 3) return;
+    const int axes = dimensions_;
     if (options_.grid_resolution > 0) {
         const glm::dvec3 extent = grid_.world.extent();
-        const double longest = std::max(extent.x, extent.y);
+        double longest = 0.0;
+        for (int a = 0; a < axes; ++a) longest = std::max(longest, extent[a]);
         glm::ivec3 res{1, 1, 1};
-        for (int axis = 0; axis < 2; ++axis)
-            res[axis] =
-                std::max(1, int(std::lround(options_.grid_resolution * extent[axis] / longest)));
-        if (checkResolution(2, res).empty()) grid_.resolution = res;
+        for (int a = 0; a < axes; ++a)
+            res[a] = std::max(1, int(std::lround(options_.grid_resolution * extent[a] / longest)));
+        if (checkResolution(dimensions_, res).empty()) grid_.resolution = res;
     }
     voxel_size_ = grid_.voxelSize();
     const int w = grid_.resolution.x, h = grid_.resolution.y;
+    const int d = dimensions_ == 3 ? grid_.resolution.z : 1;
 
     const size_t n = scene.objects.size();
     dynamic_.clear();
     static_outside_.clear();
     max_speed_.assign(n, 0.0);
     bound_radius_.assign(n, 0.0);
-    in_last_pvs_.assign(n, 0);
+    reach_.assign(n, Aabb{});
+    reach_in_grid_.assign(n, 0);
+    inner_boxes_.assign(n, nullptr);
     pvs_stamp_.assign(n, 0);
+    rejected_stamp_.assign(n, 0);
+    discretized_stamp_.assign(n, 0);
     tbv_.assign(n, Tbv{});
+    tbv_seen_.assign(n, 0);
+    tbv_test_ = 0;
+    expiry_queue_.reset(n);
+    validity_.reset(n, options_.adaptive_validity ? TbvValidityMode::Adaptive : TbvValidityMode::Fixed,
+                    options_.validity_s, scene.dt);
     edge_tbvs_.clear();
+    discretized_.clear();
+    last_discretized_.clear();
+    discretized_.reserve(n);
+    last_discretized_.reserve(n);
     has_static_ = has_dynamic_ = false;
+    mesh_interiors_.clear();
     for (size_t i = 0; i < n; ++i) {
         const SceneObject& object = scene.objects[i];
         max_speed_[i] = maxSpeedOf(object);
-        bound_radius_[i] = boundingRadiusOf(object);
+        if (dimensions_ == 2) bound_radius_[i] = boundingRadiusOf(object);
+        reach_[i] = reachOf(object, grid_.world, dimensions_);
+        bool in = true;
+        for (int a = 0; a < axes; ++a)
+            in = in && reach_[i].min[a] >= grid_.world.min[a] &&
+                 reach_[i].max[a] <= grid_.world.max[a];
+        reach_in_grid_[i] = in;
         if (object.isDynamic()) {
             dynamic_.push_back(int(i));
             has_dynamic_ = true;
@@ -115,33 +169,109 @@ void RgvcCuller::reset(const Scene& scene) {
             has_static_ = true;
         }
     }
-    occluder_.resize(w, h);
-    occlusion_.resize(w, h);
-    open_.resize(w, h);
+    if (dimensions_ == 3) {
+        // One interior per distinct mesh (copies share theirs), made here once.
+        for (size_t i = 0; i < n; ++i) {
+            const SceneObject& object = scene.objects[i];
+            if (object.shape != ShapeKind::Mesh || !object.mesh) continue;
+            const TriangleMesh* mesh = object.mesh.get();
+            auto it = std::find_if(mesh_interiors_.begin(), mesh_interiors_.end(),
+                                   [&](const auto& e) { return e.first == mesh; });
+            if (it == mesh_interiors_.end()) {
+                mesh_interiors_.emplace_back(mesh, meshInteriorBoxes(*mesh));
+                it = mesh_interiors_.end() - 1;
+            }
+        }
+        for (size_t i = 0; i < n; ++i) {
+            const SceneObject& object = scene.objects[i];
+            if (object.shape != ShapeKind::Mesh || !object.mesh) continue;
+            for (const auto& entry : mesh_interiors_)
+                if (entry.first == object.mesh.get()) inner_boxes_[i] = &entry.second;
+        }
+    }
+    occluder_.resize(w, h, d);
+    occlusion_.resize(w, h, d);
+    open_.resize(w, h, d);
     // Os only with static objects. The id-list matrices take memory on their first
     // add, so I's two parts and T cost nothing where the scene writes nothing.
     if (has_static_)
-        static_occluder_.resize(w, h);
+        static_occluder_.resize(w, h, d);
     else
         static_occluder_.release();
-    identifiers_static_.resize(w, h, false);
-    identifiers_dynamic_.resize(w, h, true);
+    identifiers_static_.resize(w, h, false, d);
+    identifiers_dynamic_.resize(w, h, true, d);
     tbv_matrix_.resize(w, h, false);
+    if (dimensions_ == 3) {
+        tbv_xz_.resize(w, d, false);
+        tbv_yz_.resize(h, d, false);
+        direction_map_.resize(
+            RgvcDirectionMap::resolutionFor(std::max({w, h, d})));
+        direction_pass_ = direction_map_.restartPasses();
+        layer_occluders_.reserve(size_t(w) * size_t(h) + size_t(h) * size_t(d) +
+                                 size_t(w) * size_t(d));
+    } else {
+        tbv_xz_.release();
+        tbv_yz_.release();
+        direction_map_ = RgvcDirectionMap{};
+    }
     discretizeStatic(scene);
 }
 
 void RgvcCuller::addToPvs(int index) {
-    if (pvs_stamp_[size_t(index)] == frame_) return;
+    if (pvs_stamp_[size_t(index)] == frame_ || rejected_stamp_[size_t(index)] == frame_) return;
+    // A voxel in the frustum may hold an object that is not: the object's own
+    // frustum test (as vfc's) keeps it out.
+    if (!objectTouchesFrustum(*scene_, index)) {
+        rejected_stamp_[size_t(index)] = frame_;
+        return;
+    }
     pvs_stamp_[size_t(index)] = frame_;
     out_->pvs.push_back(index);
+}
+
+void RgvcCuller::setUpFrame2d(const Camera& camera, bool& unreachable, bool& teleported) {
+    wedge_.set(camera, voxel_size_);
+    const glm::ivec3 v = grid_.voxelOf(camera.position);
+    viewer_ = {v.x, v.y};
+    // voxelOf clamps beyond 1e9 voxels: the viewer's voxel then no longer holds
+    // the viewpoint and the chess layers mean nothing.
+    unreachable = std::abs(v.x) >= 900000000 || std::abs(v.y) >= 900000000;
+    teleported = frame_ > 1 && chessDistance(viewer_ - last_viewer_) > 1;
+    const glm::dvec3 fwd = camera.forward();
+    line_of_sight_ = BresenhamLine::towards(fwd.x / voxel_size_.x, fwd.y / voxel_size_.y);
+    double x0, y0, x1, y1;
+    wedge_.bounds(x0, y0, x1, y1);
+    const glm::dvec3& o = grid_.world.min;
+    auto cell = [](double u, int hi) { return int(std::clamp(std::floor(u), -1.0, double(hi))); };
+    clip_x0_ = std::max(0, cell((x0 - o.x) / voxel_size_.x, grid_.resolution.x));
+    clip_x1_ = std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
+    clip_y0_ = std::max(0, cell((y0 - o.y) / voxel_size_.y, grid_.resolution.y));
+    clip_y1_ = std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
+}
+
+void RgvcCuller::setUpFrame3d(const Camera& camera, bool& unreachable, bool& teleported) {
+    frustum3_.set(camera, grid_);
+    const glm::ivec3 v = grid_.voxelOf(camera.position);
+    viewer3_ = glm::i64vec3(v);
+    unreachable = false;
+    for (int a = 0; a < 3; ++a) unreachable = unreachable || std::abs(v[a]) >= 900000000;
+    const glm::i64vec3 step = viewer3_ - last_viewer3_;
+    teleported = frame_ > 1 && std::max({std::llabs(step.x), std::llabs(step.y),
+                                         std::llabs(step.z)}) > 1;
+    const glm::dvec3 fwd = camera.forward();
+    line_of_sight3_ = BresenhamLine3::towards(fwd.x / voxel_size_.x, fwd.y / voxel_size_.y,
+                                              fwd.z / voxel_size_.z);
+    eye_in_grid_ = grid_.world.contains(camera.position);
+    direction_map_.begin(camera.position);
+    direction_map_.setFrustum(frustum3_.edgeDirections());
+    direction_covered_ = false;
 }
 
 void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
     out.pvs.clear();
     out.stats = CullStats{};
-    if (scene.dimensions != 2) {
-        // The registry offers rgvc for 2D scenes only; a caller that culls a 3D
-        // scene anyway gets view-frustum culling of the bounds, which is
+    if (scene.dimensions != 2 && scene.dimensions != 3) {
+        // No grid for such a scene: view-frustum culling of the bounds, which is
         // conservative.
         for (const SceneObject& object : scene.objects)
             if (boxMayIntersectFrustum(scene.boundsAt(object, t), camera))
@@ -149,39 +279,22 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         std::sort(out.pvs.begin(), out.pvs.end());
         return;
     }
-    if (!ready_ || scene.objects.size() != object_count_ || (frame_ > 0 && t < last_t_))
+    if (!ready_ || scene.dimensions != dimensions_ || scene.objects.size() != object_count_ ||
+        (frame_ > 0 && t < last_t_))
         reset(scene);
     ++frame_;
     t_ = t;
     out_ = &out;
     camera_ = &camera;
+    scene_ = &scene;
     voxels_visited_ = tbv_created_ = tbv_expired_ = tbv_revealed_ = object_updates_ = 0;
+    bool unreachable = false, teleported = false;
+    if (dimensions_ == 2)
+        setUpFrame2d(camera, unreachable, teleported);
+    else
+        setUpFrame3d(camera, unreachable, teleported);
 
-    wedge_.set(camera, voxel_size_);
-    const glm::ivec3 v = grid_.voxelOf(camera.position);
-    viewer_ = {v.x, v.y};
-    // voxelOf clamps beyond 1e9 voxels: the viewer's voxel then no longer holds
-    // the viewpoint and the chess layers mean nothing.
-    const bool unreachable = std::abs(v.x) >= 900000000 || std::abs(v.y) >= 900000000;
-    const bool teleported = frame_ > 1 && chessDistance(viewer_ - last_viewer_) > 1;
-    const glm::dvec3 fwd = camera.forward();
-    line_of_sight_ = BresenhamLine::towards(fwd.x / voxel_size_.x, fwd.y / voxel_size_.y);
-    {
-        double x0, y0, x1, y1;
-        wedge_.bounds(x0, y0, x1, y1);
-        const glm::dvec3& o = grid_.world.min;
-        auto cell = [](double u, int hi) {
-            return int(std::clamp(std::floor(u), -1.0, double(hi)));
-        };
-        clip_x0_ = std::max(0, cell((x0 - o.x) / voxel_size_.x, grid_.resolution.x));
-        clip_x1_ =
-            std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
-        clip_y0_ = std::max(0, cell((y0 - o.y) / voxel_size_.y, grid_.resolution.y));
-        clip_y1_ =
-            std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
-    }
-
-    // Step 1: scene discretization (s4.1, s4.5).
+    // Step 1: scene discretization (s4.1, s4.5, s5.1).
     if (has_static_)
         occluder_.copyFrom(static_occluder_);
     else
@@ -194,16 +307,16 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         if (objectTouchesFrustum(scene, index)) addToPvs(index);
     handleDynamicObjects(scene, teleported);
 
-    // Steps 2 to 4: traversal with occluder extension and occlusion (s4.2 - s4.4).
+    // Steps 2 to 4: traversal with occluder extension and occlusion.
     if (unreachable) {
         for (size_t i = 0; i < scene.objects.size(); ++i)
             if (objectTouchesFrustum(scene, int(i))) addToPvs(int(i));
-    } else {
+    } else if (dimensions_ == 2) {
         traverse(scene);
+    } else {
+        traverse3d(scene);
     }
 
-    for (const int index : dynamic_)
-        in_last_pvs_[size_t(index)] = pvs_stamp_[size_t(index)] == frame_;
     for (int& entry : out.pvs) entry = scene.objects[size_t(entry)].id;
     std::sort(out.pvs.begin(), out.pvs.end());
     out.stats.set(Counter::VoxelsVisited, voxels_visited_);
@@ -213,6 +326,7 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     out.stats.set(Counter::ObjectUpdates, object_updates_);
 
     last_viewer_ = viewer_;
+    last_viewer3_ = viewer3_;
     last_t_ = t;
     snapshot_.memory = memory();
     if (snapshot_enabled_) {
@@ -231,16 +345,19 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
             view.curve_radius = b.curve.radius;
             view.filled = b.filled;
             view.edge = b.edge;
+            view.cells = b.cells;
             snapshot_.tbv_list.push_back(view);
         }
     }
     out_ = nullptr;
     camera_ = nullptr;
+    scene_ = nullptr;
 }
 
 void RgvcCuller::fillSnapshotFrame(const Camera& camera) {
     snapshot_.valid = snapshot_enabled_;
     if (!snapshot_enabled_) return;
+    snapshot_.dimensions = dimensions_;
     snapshot_.frame = frame_;
     snapshot_.t = t_;
     snapshot_.grid = grid_;
@@ -248,16 +365,26 @@ void RgvcCuller::fillSnapshotFrame(const Camera& camera) {
     snapshot_.forward = camera.forward();
     snapshot_.fov_deg = camera.fov_deg;
     snapshot_.far = camera.far;
-    snapshot_.viewer_voxel = viewer_;
+    if (dimensions_ == 2) {
+        snapshot_.viewer_voxel = viewer_;
+        snapshot_.viewer_voxel_z = 0;
+    } else {
+        snapshot_.viewer_voxel = {viewer3_.x, viewer3_.y};
+        snapshot_.viewer_voxel_z = viewer3_.z;
+    }
     snapshot_.occluder = &occluder_;
     snapshot_.static_occluder = has_static_ ? &static_occluder_ : nullptr;
     snapshot_.occlusion = &occlusion_;
     snapshot_.identifiers_static = &identifiers_static_;
     snapshot_.identifiers_dynamic = &identifiers_dynamic_;
     snapshot_.tbvs = has_dynamic_ ? &tbv_matrix_ : nullptr;
+    snapshot_.tbvs_xz = has_dynamic_ && dimensions_ == 3 ? &tbv_xz_ : nullptr;
+    snapshot_.tbvs_yz = has_dynamic_ && dimensions_ == 3 ? &tbv_yz_ : nullptr;
+    snapshot_.direction_map = dimensions_ == 3 ? &direction_map_ : nullptr;
     snapshot_.visits.clear();
     snapshot_.seeds.clear();
     snapshot_.occluders.clear();
+    snapshot_.occluders3d.clear();
     snapshot_.tbv_list.clear();
     snapshot_.first_layer = 0;
     snapshot_.last_layer = -1;
@@ -271,8 +398,9 @@ RgvcMatrixMemory RgvcCuller::memory() const {
     m.occlusion = occlusion_.memoryBytes();
     m.identifiers_static = identifiers_static_.memoryBytes();
     m.identifiers_dynamic = identifiers_dynamic_.memoryBytes();
-    m.tbv = tbv_matrix_.memoryBytes();
+    m.tbv = tbv_matrix_.memoryBytes() + tbv_xz_.memoryBytes() + tbv_yz_.memoryBytes();
     m.traversal = open_.memoryBytes();
+    m.direction_map = direction_map_.memoryBytes();
     return m;
 }
 

@@ -1,54 +1,74 @@
-// `rgvc`: regular-grid visibility culling for dynamic 2D scenes, after
+// `rgvc`: regular-grid visibility culling for dynamic scenes, after
 // G. C. Batagelo and S.-T. Wu, "Dynamic Scene Occlusion Culling using a Regular
-// Grid" (SIBGRAPI 2002), sections 3 and 4 (the 2D case) with TBVs after
-// Sudarsky and Gotsman.
+// Grid" (SIBGRAPI 2002): sections 3 and 4 (2D) and 5 (3D), with TBVs after
+// Sudarsky and Gotsman. One culler for both dimensions: the frame loop, the PVS,
+// the TBV bookkeeping and the matrices are shared; traversal, discretization,
+// occlusion and the TBVs' shape in T have a 2D and a 3D form.
 //
 // Each frame (section 3's four steps):
-//  1. Scene discretization (s4.1, s4.5; rgvc_discretize.cpp): O <- Os; every
-//     dynamic object in the last frame's PVS (all of them in the first frame) is
-//     written into O (voxels wholly inside it) and I (voxels it touches); every
-//     other dynamic object keeps or gets a TBV in T; an expired TBV is renewed.
-//     Static objects went into Os and I once, in reset().
-//  2. View-frustum traversal (s4.2; rgvc_traversal.cpp): chess layers around the
-//     viewer's voxel in increasing distance, each walked from its seed voxel on
-//     the Bresenham line of sight in the two directions of the paper's six
-//     rules; non-occluded voxels add their I objects to the PVS and reveal
-//     their TBVs (those objects are discretized at once); early termination
-//     after a layer whose frustum voxels are all occluded.
-//  3. Occluder extension and 4. occlusion computation (s4.3, s4.4;
-//     rgvc_occlusion.h): from each non-occluded opaque voxel, an L-shaped
-//     extended occluder and its occlusion polygon, rasterized into H.
+//  1. Scene discretization (s4.1, s4.5, s5.1; rgvc_discretize*.cpp): O <- Os;
+//     every dynamic object in the last frame's PVS (all of them in the first
+//     frame) is written into O (voxels wholly inside it; in 3D inside its inner
+//     model) and I (voxels it touches); an object that left the PVS gets a TBV in
+//     T; TBVs whose validity ran out (popped from the expiration queue,
+//     culling/tbv/tbv_expiry_queue.h) are renewed. Static objects went into Os
+//     and I once, in reset(). Hidden objects cost nothing in frames where their
+//     TBV neither expires nor is revealed.
+//  2. View-frustum traversal (s4.2, s5.2; rgvc_traversal*.cpp): chess layers
+//     around the viewer's voxel in increasing distance from the seed voxels of
+//     the Bresenham line of sight (2D: rings walked in the paper's two
+//     directions; 3D: cube shells swept face by face); non-occluded voxels add
+//     their I objects to the PVS and reveal their TBVs (those objects are
+//     discretized at once); early termination after a layer whose frustum
+//     voxels all block.
+//  3. Occluder extension and 4. occlusion computation: 2D (s4.3, s4.4;
+//     rgvc_occlusion.h) from each non-occluded opaque voxel, an L-shaped
+//     extended occluder and its occlusion polygon rasterized into H; 3D (s5.3;
+//     rgvc_occlusion3d.h) each layer's blocking voxels extruded from the eye
+//     into a direction map, against which later voxels are marked in H.
 //
-// Departures, each for conservativeness or robustness, and why:
-//  - Discretization tests voxels exactly (grid/conservative_raster.h) instead of
-//    growing / shrinking outlines by d / sqrt(2).
-//  - The occlusion polygon is exact for the real viewpoint and shrunk by
+// Departures, each for conservativeness, robustness or cost, and why:
+//  - 2D discretization tests voxels exactly (grid/conservative_raster.h) instead
+//    of growing / shrinking outlines by d / sqrt(2); 3D uses the section 5.1
+//    models exactly (spheres and boxes are their own inner and outer models; a
+//    mesh's inner model is its interior boxes, culling/scene/mesh_interior.h,
+//    none for an open mesh; its outer model its bounding box).
+//  - The 2D occlusion polygon is exact for the real viewpoint and shrunk by
 //    (|nx| + |ny|) d / 2 (rgvc_occlusion.h), not built from voxel centres.
-//  - The frustum may be 360 degrees wide and the viewer may be outside the grid:
-//    the traversal then starts at the first layer that reaches the grid and walks
-//    only the grid's part of each layer (rgvc_frustum.h); early termination is
-//    only taken when the layer's frustum part lies wholly inside the grid.
-//  - Each layer's walk ends where the wedge's edges cross the ring (plus a
-//    margin), not at the first voxel outside the frustum: `far` can cut a layer's
-//    frustum part into pieces that such a walk would not reach. When the
-//    Bresenham seed itself misses a narrow wedge near the viewer, the walk starts
-//    at the nearer end of that part.
-//  - Occluder extension is the paper's convex (L-shaped) variant only.
+//  - The frustum may be 360 degrees wide (2D), and the viewer may be outside the
+//    grid: the traversal then starts at the first layer that reaches the grid
+//    and walks only the grid's part of each layer; early termination is only
+//    taken when no ray of the frustum can still enter the grid further out.
+//  - 2D: each layer's walk ends where the wedge's edges cross the ring (plus a
+//    margin), not at the first voxel outside the frustum: `far` can cut a
+//    layer's frustum part into pieces that such a walk would not reach. When the
+//    Bresenham seed itself misses a narrow wedge near the viewer, the walk
+//    starts at the nearer end of that part.
+//  - 3D: the frustum has no near plane (rgvc_frustum3d.h says why), and opaque
+//    voxels in front of the near plane do not occlude.
+//  - Occluder extension is the paper's convex (L-shaped) variant only in 2D.
 //  - Objects not wholly inside the grid are also kept whenever they touch the
 //    frustum (their parts outside the grid are invisible to the matrices).
-//  - A TBV whose digital circle would leave the grid is not written into T but
-//    kept in a list and revealed when its disc touches the frustum (a ray could
-//    otherwise reach the object around the outside of the grid).
-//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), shortened (as the
-//    paper suggests) so that the circle leaves the viewer's voxel outside; when even one frame's validity
-//    would not, the TBV is written filled. When the viewer's voxel jumps by more
-//    than one voxel between frames (a teleport: the 8-connected path condition
-//    fails), every boundary TBV whose curve may enclose the new viewer voxel is
-//    revealed before the traversal.
+//  - An object found in a visible voxel joins the PVS only if its own bounds
+//    pass vfc's frustum test: a voxel in the frustum may hold objects that are
+//    not (so the PVS is never larger than vfc's).
+//  - A TBV is cut to the box the object can ever reach (the world box for
+//    linear and random motion, which fold back at its walls; the keyframes'
+//    box), and written into T as the boundary of that cut region. Only an object
+//    that can leave the grid has a TBV kept out of T, revealed when it touches
+//    the frustum (a ray could otherwise reach it around the outside of the grid).
+//  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), adaptive by
+//    default (Sudarsky & Gotsman, s3.4; culling/tbv/tbv_validity.h) so that a
+//    period too long for the scene corrects itself instead of having its TBV
+//    revealed every frame, spread over [0.75, 1] times the period
+//    (kTbvValiditySpread) so that TBVs made together do not expire together,
+//    and shortened (as the paper suggests) so that the TBV
+//    leaves the viewer's voxel outside; when even one frame's validity would
+//    not, the TBV is written filled. When the viewer's voxel jumps by more than
+//    one voxel between frames (a teleport), every boundary TBV that may enclose
+//    the new viewer voxel is revealed before the traversal.
 //  - A revealed object whose voxels the traversal had already passed
-//    non-occluded joins the PVS at once (the traversal will not come back). With
-//    the viewer outside every boundary TBV this cannot happen (the curve is met
-//    in an earlier layer than the object); it is a second line of defence.
+//    non-occluded joins the PVS at once (the traversal will not come back).
 //  - Time going backwards, or a scene with a different object count, resets.
 //  - A viewpoint so far away that RegularGrid::voxelOf clamps its voxel (about
 //    1e9 voxels) falls back to view-frustum culling for that frame.
@@ -56,25 +76,30 @@
 // Counters: voxels_visited (frustum voxels reached by the traversal, occluded or
 // not), tbv_created, tbv_expired, tbv_revealed, object_updates (dynamic objects
 // written into O and I this frame).
-// 3D scenes are not supported (the registry offers rgvc for 2D only); cull()
-// then falls back to view-frustum culling of the objects' bounds (as `vfc`),
-// which is conservative.
-// Cost per frame: O(dynamic objects) bookkeeping + O(voxels visited) + the
-// discretization of the PVS objects + one occlusion rasterization per occluder.
+// Cost per frame: O(objects in the last PVS + TBVs expiring or revealed) for the
+// bookkeeping, O(voxels visited) for the traversal, plus the discretization of
+// those objects and the occlusion work (2D: one polygon per occluder; 3D: the
+// direction-map cells under the layer's new occluders, tested once per layer).
 // Buffers are sized in reset(); a steady state allocates nothing.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "culling/api/culler.h"
 #include "culling/rgvc/rgvc_frustum.h"
+#include "culling/rgvc/rgvc_frustum3d.h"
+#include "culling/rgvc/rgvc_occlusion3d.h"
 #include "culling/rgvc/rgvc_options.h"
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/rgvc/rgvc_tbv.h"
+#include "culling/tbv/tbv_expiry_queue.h"
+#include "culling/tbv/tbv_validity.h"
 #include "grid/bit_matrix.h"
 #include "grid/bresenham.h"
+#include "grid/bresenham3d.h"
 #include "grid/id_list_matrix.h"
 #include "grid/regular_grid.h"
 
@@ -101,24 +126,35 @@ public:
 private:
     struct Tbv {
         bool active = false;
-        bool edge = false;    // not in T: revealed by its disc touching the frustum
+        bool edge = false;    // not in T: revealed when it touches the frustum
         bool filled = false;  // written filled rather than as its boundary
         glm::dvec3 centre{0.0};
-        double radius = 0.0;
+        double radius = 0.0;  // 2D: the disc's; 3D: the cube's half side
+        Aabb box;             // 3D: the cube cut to the object's reach (world)
         double created = 0.0;
         double expiry = 0.0;
-        RgvcTbvCurve curve;
-        int edge_slot = -1;  // index in edge_tbvs_
+        RgvcTbvCurve curve;   // 2D
+        RgvcVoxelBox cells;   // the voxels the TBV may cover (3D) / its clip box (2D)
+        int edge_slot = -1;   // index in edge_tbvs_
+        uint32_t serial = 0;  // TBVs made for this object so far
     };
 
-    // rgvc_discretize.cpp (s4.1, s4.5)
+    // rgvc_discretize.cpp (s4.1, s4.5) and rgvc_discretize3d.cpp (s5.1)
     void discretizeStatic(const Scene& scene);
     void discretizeObject(const Scene& scene, int index, bool during_traversal);
+    void rasterize2d(const SceneObject& object, const glm::dvec3& shift, int index,
+                     bool is_static, bool during_traversal);
+    void rasterize3d(const SceneObject& object, const glm::dvec3& shift, int index,
+                     bool is_static, bool during_traversal);
+    bool objectTouchesFrustum(const Scene& scene, int index) const;
+    // rgvc_tbv_life.cpp: the TBVs' life cycle (s4.1, s5.2)
     void createTbv(const Scene& scene, int index);
     void removeTbv(int index);
     void revealTbv(const Scene& scene, int index, bool during_traversal);
+    void writeTbv(int index, bool add);
+    bool tbvMayEncloseViewer(const Tbv& b) const;
+    void shapeTbv(Tbv& b, double radius);
     void handleDynamicObjects(const Scene& scene, bool teleported);
-    bool objectTouchesFrustum(const Scene& scene, int index) const;
     // rgvc_traversal.cpp (s4.2 - s4.4)
     void traverse(const Scene& scene);
     void visitLayer(const Scene& scene, int64_t k);
@@ -126,12 +162,22 @@ private:
                   int64_t count, int dir);
     void visitVoxel(const Scene& scene, int x, int y, int64_t k);
     void occludeFrom(int x, int y, int64_t k);
+    // rgvc_traversal3d.cpp (s5.2, s5.3)
+    void traverse3d(const Scene& scene);
+    void visitShell(const Scene& scene, int64_t k);
+    void visitVoxel3d(const Scene& scene, int x, int y, int z, int64_t k);
+    void revealTbvsAt3d(const Scene& scene, int x, int y, int z);
+    void occludeFromLayer3d(int64_t k);
+    bool blocksInLayer3d(int x, int y, int z) const;
     // rgvc_culler.cpp
     void addToPvs(int index);
     void fillSnapshotFrame(const Camera& camera);
+    void setUpFrame2d(const Camera& camera, bool& unreachable, bool& teleported);
+    void setUpFrame3d(const Camera& camera, bool& unreachable, bool& teleported);
 
     RgvcOptions options_;
     bool ready_ = false;
+    int dimensions_ = 2;
     size_t object_count_ = 0;
     RegularGrid grid_;
     glm::dvec3 voxel_size_{1.0};
@@ -142,19 +188,32 @@ private:
     BitMatrix open_;                    // voxels the traversal passed non-occluded this frame
     IdListMatrix identifiers_static_;   // I, static objects
     IdListMatrix identifiers_dynamic_;  // I, dynamic objects, rebuilt every frame
-    IdListMatrix tbv_matrix_;           // T
+    IdListMatrix tbv_matrix_;           // T (2D), Txy (3D)
+    IdListMatrix tbv_xz_;               // Txz (3D)
+    IdListMatrix tbv_yz_;               // Tyz (3D)
     bool has_static_ = false;
     bool has_dynamic_ = false;
 
     std::vector<int> dynamic_;          // object indices
     std::vector<int> static_outside_;   // static objects not wholly inside the grid
     std::vector<double> max_speed_;     // per object index
-    std::vector<double> bound_radius_;  // per object index, around its anchor
-    std::vector<uint8_t> in_last_pvs_;
-    std::vector<int64_t> pvs_stamp_;  // == frame_ once in this frame's PVS
+    std::vector<double> bound_radius_;  // per object index, around its anchor (2D)
+    std::vector<Aabb> reach_;           // per object index: where it can ever be
+    std::vector<uint8_t> reach_in_grid_;
+    std::vector<const std::vector<Aabb>*> inner_boxes_;  // per object index (3D meshes)
+    std::vector<std::pair<const TriangleMesh*, std::vector<Aabb>>> mesh_interiors_;
+    std::vector<int64_t> pvs_stamp_;       // == frame_ once in this frame's PVS
+    std::vector<int64_t> rejected_stamp_;  // == frame_ once found outside the frustum
     std::vector<Tbv> tbv_;
-    std::vector<int> edge_tbvs_;  // object indices with edge TBVs
+    TbvExpiryQueue expiry_queue_;
+    TbvValidityPeriods validity_;
+    std::vector<int> edge_tbvs_;         // object indices with edge TBVs
+    std::vector<int> discretized_;       // dynamic objects written into O and I this frame
+    std::vector<int> last_discretized_;  // ... and in the last frame
+    std::vector<int64_t> discretized_stamp_;  // == frame_ once in discretized_
     std::vector<int> reveal_scratch_;
+    std::vector<uint32_t> tbv_seen_;  // 3D 2-of-3 test: per object, the last test that saw it
+    uint32_t tbv_test_ = 0;
 
     // Per frame.
     int64_t frame_ = 0;
@@ -165,7 +224,19 @@ private:
     glm::i64vec2 last_viewer_{0};
     BresenhamLine line_of_sight_{glm::i64vec2(1, 0)};
     int clip_x0_ = 0, clip_x1_ = -1, clip_y0_ = 0, clip_y1_ = -1;  // frustum box in voxels
+    // 3D.
+    RgvcFrustum3 frustum3_;
+    RgvcDirectionMap direction_map_;
+    glm::i64vec3 viewer3_{0};
+    glm::i64vec3 last_viewer3_{0};
+    BresenhamLine3 line_of_sight3_{glm::i64vec3(1, 0, 0)};
+    glm::i64vec3 clip_lo3_{0}, clip_hi3_{-1};  // frustum voxel box cut to the grid
+    bool eye_in_grid_ = false;
+    std::vector<glm::ivec3> layer_occluders_;  // the current layer's new occluders
+    bool direction_covered_ = false;  // the direction map holds a covered cell this frame
+    uint32_t direction_pass_ = 0;     // numbers the layers' passes over the map, across frames
     const Camera* camera_ = nullptr;
+    const Scene* scene_ = nullptr;
     // Counters of the frame.
     int64_t voxels_visited_ = 0;
     int64_t tbv_created_ = 0;

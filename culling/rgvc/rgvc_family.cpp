@@ -8,8 +8,11 @@ namespace gridcull {
 const KnobTable<RgvcOptions>& rgvcKnobs() {
     static const KnobTable<RgvcOptions> table{
         knob("rgvc-validity", &RgvcOptions::validity_s, kMinRgvcValidity, kMaxRgvcValidity,
-             "seconds a TBV stays valid; shorter: fewer TBVs revealed but more object "
-             "updates"),
+             "seconds a TBV stays valid (the first period when adaptive); shorter: fewer "
+             "TBVs revealed but more object updates"),
+        knob("rgvc-adaptive", &RgvcOptions::adaptive_validity, 0, 1,
+             "1: each object's TBV validity adapts (doubled after an expiry, halved after a "
+             "reveal); 0: fixed at --rgvc-validity"),
         derivedKnob("rgvc-grid-res", &RgvcOptions::grid_resolution, 1, kMaxRgvcGridResolution,
                     "scene", "the scene's grid.resolution",
                     "voxels along the world's longest axis; finer: more voxels to traverse, "
@@ -22,7 +25,7 @@ FamilyEntry rgvcFamily() {
     FamilyEntry family;
     family.id = "rgvc";
     family.title = "Regular-grid culling (Batagelo & Wu)";
-    family.algorithms = {{"rgvc", kRuns2d, "regular-grid culling with temporal bounding volumes"}};
+    family.algorithms = {{"rgvc", kRuns2d | kRuns3d, "regular-grid culling with temporal bounding volumes"}};
     family.knobs = rgvcKnobs().knobs();
     family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
         return std::make_unique<RgvcCuller>(rgvcKnobs().read(*request.knobs));

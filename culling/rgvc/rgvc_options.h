@@ -11,8 +11,12 @@ constexpr double kMaxRgvcValidity = 86400.0;
 constexpr int kMaxRgvcGridResolution = 8192;
 
 struct RgvcOptions {
-    // Validity period of a temporal bounding volume, seconds (> 0).
+    // Validity period of a temporal bounding volume, seconds (> 0); with
+    // adaptive validity the first period of each object.
     double validity_s = 0.5;
+    // 1: adaptive validity periods (Sudarsky & Gotsman, s3.4: doubled after an
+    // expiry, halved after a reveal); 0: every TBV gets validity_s.
+    int adaptive_validity = 1;
     // Voxels along the world's longest axis, the other axis in proportion;
     // 0 keeps the scene's grid.resolution.
     int grid_resolution = 0;

@@ -20,6 +20,8 @@
 
 #include "culling/api/debug_snapshot.h"
 #include "culling/rgvc/rgvc_occlusion.h"
+#include "culling/rgvc/rgvc_occlusion3d.h"
+#include "culling/rgvc/rgvc_tbv.h"
 #include "grid/bit_matrix.h"
 #include "grid/id_list_matrix.h"
 #include "grid/regular_grid.h"
@@ -30,8 +32,17 @@ namespace gridcull {
 // in RgvcSnapshot::visits.
 struct RgvcVisit {
     glm::ivec2 voxel{0};
+    int32_t z = 0;          // 3D: the voxel's z (voxel holds x and y)
     int32_t layer = 0;      // chess distance from the viewer's voxel
-    bool occluded = false;  // already in H when reached (then nothing else was done)
+    bool occluded = false;  // in H when reached (then nothing else was done)
+};
+
+// 3D: a voxel that acted as an occluder (opaque, not occluded, wholly beyond
+// the near plane) in its layer's extrusion into the direction map.
+struct RgvcOccluder3d {
+    glm::ivec3 voxel{0};
+    int32_t layer = 0;
+    int64_t cells_covered = 0;  // direction-map cells its layer's pass covered under it
 };
 
 // The seed voxel of one chess layer: where the layer's walk started. The
@@ -40,6 +51,7 @@ struct RgvcVisit {
 // end of the layer's run instead and `moved` is set.
 struct RgvcSeed {
     glm::i64vec2 voxel{0};  // may lie outside the grid
+    int64_t z = 0;          // 3D
     int64_t layer = 0;
     bool moved = false;
 };
@@ -61,8 +73,9 @@ struct RgvcTbvView {
     double expiry = 0.0;     // seconds; infinity for objects that cannot move
     glm::i64vec2 curve_centre{0};
     int curve_radius = 0;  // rho, voxels
-    bool filled = false;   // written as a filled disc (the viewer could be inside)
-    bool edge = false;     // reaches outside the grid: kept out of T, tested by its disc
+    bool filled = false;   // written filled (the viewer could be inside)
+    bool edge = false;     // may leave the grid: kept out of T, tested against the frustum
+    RgvcVoxelBox cells;    // 3D: the box written into Txy, Txz, Tyz; 2D: the clip box
 };
 
 // Bytes held by each matrix (capacities), present or not.
@@ -72,12 +85,13 @@ struct RgvcMatrixMemory {
     size_t occlusion = 0;            // H
     size_t identifiers_static = 0;   // I, static objects' lists
     size_t identifiers_dynamic = 0;  // I, dynamic objects' lists
-    size_t tbv = 0;                  // T, only with dynamic objects
+    size_t tbv = 0;                  // T (Txy, Txz and Tyz in 3D), only with dynamic objects
     size_t traversal = 0;            // the visited-and-not-occluded scratch bits
+    size_t direction_map = 0;        // 3D: the occlusion direction map
 
     size_t total() const {
         return occluder + static_occluder + occlusion + identifiers_static + identifiers_dynamic +
-               tbv + traversal;
+               tbv + traversal + direction_map;
     }
 };
 
@@ -86,6 +100,7 @@ struct RgvcSnapshot final : DebugSnapshot {
     RgvcSnapshot() : DebugSnapshot(kKind) {}
 
     bool valid = false;
+    int dimensions = 2;
     int64_t frame = 0;  // frames culled since reset, the first is 1
     double t = 0.0;
     RegularGrid grid;
@@ -94,17 +109,22 @@ struct RgvcSnapshot final : DebugSnapshot {
     double fov_deg = 0.0;
     double far = 0.0;
     glm::i64vec2 viewer_voxel{0};  // may lie outside the grid
+    int64_t viewer_voxel_z = 0;    // 3D
 
     const BitMatrix* occluder = nullptr;                // O
     const BitMatrix* static_occluder = nullptr;         // Os (nullptr without static objects)
     const BitMatrix* occlusion = nullptr;               // H
     const IdListMatrix* identifiers_static = nullptr;   // I of static objects
     const IdListMatrix* identifiers_dynamic = nullptr;  // I of dynamic objects
-    const IdListMatrix* tbvs = nullptr;                 // T (nullptr without dynamic objects)
+    const IdListMatrix* tbvs = nullptr;  // T, 3D Txy (nullptr without dynamic objects)
+    const IdListMatrix* tbvs_xz = nullptr;  // 3D Txz
+    const IdListMatrix* tbvs_yz = nullptr;  // 3D Tyz
+    const RgvcDirectionMap* direction_map = nullptr;  // 3D
 
     std::vector<RgvcVisit> visits;
     std::vector<RgvcSeed> seeds;
-    std::vector<RgvcOccluderView> occluders;
+    std::vector<RgvcOccluderView> occluders;    // 2D
+    std::vector<RgvcOccluder3d> occluders3d;    // 3D
     std::vector<RgvcTbvView> tbv_list;
     int64_t first_layer = 0;
     int64_t last_layer = -1;        // the last layer traversed

@@ -3,6 +3,7 @@
 #include "culling/rgvc/rgvc_tbv.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gridcull {
 
@@ -14,6 +15,21 @@ double smallestVoxelSide(const RegularGrid& grid) {
 }
 
 }  // namespace
+
+RgvcVoxelBox voxelBoxTouching(const RegularGrid& grid, const Aabb& box) {
+    RgvcVoxelBox out;
+    const glm::dvec3 d = grid.voxelSize();
+    const int axes = grid.dimensions == 2 ? 2 : 3;
+    out.lo.z = out.hi.z = 0;
+    for (int a = 0; a < axes; ++a) {
+        const double lo = (box.min[a] - grid.world.min[a]) / d[a] - 1e-6;
+        const double hi = (box.max[a] - grid.world.min[a]) / d[a] + 1e-6;
+        const double top = double(grid.resolution[a] - 1);
+        out.lo[a] = int(std::clamp(std::floor(lo), 0.0, top + 1.0));
+        out.hi[a] = int(std::clamp(std::floor(hi), -1.0, top));
+    }
+    return out;
+}
 
 RgvcTbvCurve tbvCurveFor(const RegularGrid& grid, const glm::dvec3& centre, double radius) {
     RgvcTbvCurve curve;

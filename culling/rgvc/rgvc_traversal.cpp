@@ -188,7 +188,7 @@ void RgvcCuller::visitVoxel(const Scene& scene, int x, int y, int64_t k) {
     ++voxels_visited_;
     ++layer_visited_;
     const bool occluded = occlusion_.get(x, y);
-    if (snapshot_enabled_) snapshot_.visits.push_back(RgvcVisit{{x, y}, int32_t(k), occluded});
+    if (snapshot_enabled_) snapshot_.visits.push_back(RgvcVisit{{x, y}, 0, int32_t(k), occluded});
     if (occluded) return;
     layer_all_occluded_ = false;
     open_.set(x, y);

@@ -41,7 +41,7 @@ TEST(Registry, UnknownNameIsAnErrorThatListsTheKnownOnes) {
 TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
     EXPECT_EQ(algorithmNames(2), (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
     EXPECT_EQ(algorithmNames(3),
-              (std::vector<std::string>{"all", "vfc", "exact", "lazy-grid", "lazy-grid-z",
+              (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z",
                                         "busy-grid", "busy-grid-tight"}));
     std::string why;
     EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));

@@ -1,0 +1,216 @@
+// The life cycle of regular-grid culling's temporal bounding volumes (Batagelo &
+// Wu, sections 4.1 and 5.2, after Sudarsky & Gotsman): made when an object
+// leaves the PVS, renewed when its validity runs out (the expiration queue pops
+// it), dropped when the traversal reveals it. One implementation for both
+// dimensions; only the TBV's shape differs: a digital circle in T (2D,
+// rgvc_tbv.h), a box's projections in Txy, Txz and Tyz (3D, rgvc_tbv3d.h).
+// rgvc_culler.h says where this departs from the paper.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "culling/baseline/frustum_tests.h"
+#include "culling/rgvc/rgvc_culler.h"
+#include "culling/rgvc/rgvc_tbv3d.h"
+
+namespace gridcull {
+
+namespace {
+
+// Shrinks `box` to its intersection with `limit` (an empty result keeps
+// min > max on some axis).
+Aabb intersect(const Aabb& box, const Aabb& limit) {
+    return {glm::max(box.min, limit.min), glm::min(box.max, limit.max)};
+}
+
+bool insideBox(const Aabb& inner, const Aabb& outer, int axes) {
+    for (int a = 0; a < axes; ++a)
+        if (inner.min[a] < outer.min[a] || inner.max[a] > outer.max[a]) return false;
+    return true;
+}
+
+}  // namespace
+
+void RgvcCuller::shapeTbv(Tbv& b, double radius) {
+    b.radius = radius;
+    if (dimensions_ == 2) b.curve = tbvCurveFor(grid_, b.centre, radius);
+}
+
+bool RgvcCuller::tbvMayEncloseViewer(const Tbv& b) const {
+    if (dimensions_ == 2)
+        return b.cells.contains({viewer_.x, viewer_.y, 0}) && tbvCurveMayEnclose(b.curve, viewer_);
+    return b.cells.contains(viewer3_);
+}
+
+void RgvcCuller::createTbv(const Scene& scene, int index) {
+    const SceneObject& object = scene.objects[size_t(index)];
+    Tbv& b = tbv_[size_t(index)];
+    const double speed = max_speed_[size_t(index)];
+    const glm::dvec3 shift = scene.displacementAt(object, t_);
+    const double base = dimensions_ == 2 ? bound_radius_[size_t(index)] : 0.0;
+    // A hair of extra size so that rounding never leaves the object outside.
+    const double scale = std::max({voxel_size_.x, voxel_size_.y, voxel_size_.z, base});
+    const double pad = 1e-9 * scale;
+    double validity = speed > 0.0 ? spreadValidity(validity_.period(index), index, b.serial)
+                                  : std::numeric_limits<double>::infinity();
+    ++b.serial;
+    b.centre = object.anchor + shift;
+    // 2D: a disc around the anchor, cut to where the object can ever be. 3D:
+    // the object's bounds now grown on every side (a cube of motion), cut so.
+    const Aabb& reach = reach_[size_t(index)];
+    const Aabb now = object.bounds.translated(shift);
+    auto grown = [&](double v) { return base + (speed > 0.0 ? speed * v : 0.0) + pad; };
+    auto reshape = [&](double v) {
+        shapeTbv(b, grown(v));
+        if (dimensions_ == 2) {
+            b.cells = voxelBoxTouching(grid_, reach);
+        } else {
+            const glm::dvec3 g(b.radius);
+            b.cells = voxelBoxTouching(grid_, intersect({now.min - g, now.max + g}, reach));
+        }
+    };
+    reshape(validity);
+    b.filled = false;
+    if (tbvMayEncloseViewer(b)) {
+        // The paper's condition: choose the validity so that the TBV leaves the
+        // viewer's voxel outside; if not even one frame is left, write it filled.
+        double largest;
+        if (dimensions_ == 2) {
+            largest = tbvLargestRadiusExcluding(grid_, b.centre, viewer_) - base;
+        } else {
+            // The box excludes the viewer's voxel while, on some axis, the growth
+            // stays short of the gap between the object and that voxel.
+            largest = -1.0;
+            for (int a = 0; a < 3; ++a) {
+                const double v0 = grid_.world.min[a] + double(viewer3_[a]) * voxel_size_[a];
+                const double gap = std::max(v0 - now.max[a], now.min[a] - (v0 + voxel_size_[a]));
+                largest = std::max(largest, gap - 3e-6 * voxel_size_[a]);
+            }
+        }
+        const double shorter = speed > 0.0 ? (largest - pad) / speed : -1.0;
+        if (shorter >= scene.dt && shorter < validity) {
+            validity = shorter;
+            reshape(validity);
+        }
+        b.filled = tbvMayEncloseViewer(b);
+    }
+    b.active = true;
+    b.created = t_;
+    b.expiry = t_ + validity;
+    if (dimensions_ == 2) {
+        b.edge = !reach_in_grid_[size_t(index)] && !tbvCurveInsideGrid(grid_, b.curve);
+    } else {
+        const glm::dvec3 g(b.radius);
+        b.edge = !reach_in_grid_[size_t(index)] &&
+                 !insideBox(intersect({now.min - g, now.max + g}, reach), grid_.world, 3);
+        b.box = intersect({now.min - g, now.max + g}, reach);
+    }
+    ++tbv_created_;
+    if (std::isfinite(b.expiry)) expiry_queue_.schedule(index, b.expiry);
+    writeTbv(index, true);
+}
+
+void RgvcCuller::writeTbv(int index, bool add) {
+    Tbv& b = tbv_[size_t(index)];
+    if (b.edge) {
+        if (add) {
+            b.edge_slot = int(edge_tbvs_.size());
+            edge_tbvs_.push_back(index);
+        } else {
+            const int last = edge_tbvs_.back();
+            edge_tbvs_[size_t(b.edge_slot)] = last;
+            tbv_[size_t(last)].edge_slot = b.edge_slot;
+            edge_tbvs_.pop_back();
+            b.edge_slot = -1;
+        }
+        return;
+    }
+    const int32_t id = int32_t(index);
+    auto put = [&](IdListMatrix& m, int x, int y) {
+        if (add)
+            m.add(x, y, id);
+        else
+            m.remove(x, y, id);
+    };
+    if (dimensions_ == 3) {
+        forEachTbvProjectionCell(b.cells, b.filled, [&](TbvPlane plane, int a, int c) {
+            switch (plane) {
+                case TbvPlane::Xy: put(tbv_matrix_, a, c); break;
+                case TbvPlane::Xz: put(tbv_xz_, a, c); break;
+                case TbvPlane::Yz: put(tbv_yz_, a, c); break;
+            }
+        });
+    } else if (b.filled) {
+        forEachTbvFilledSpanClipped(b.curve, b.cells, [&](int y, int x0, int x1) {
+            for (int x = x0; x <= x1; ++x) put(tbv_matrix_, x, y);
+        });
+    } else {
+        forEachTbvBoundaryVoxelClipped(b.curve, b.cells,
+                                       [&](int x, int y) { put(tbv_matrix_, x, y); });
+    }
+}
+
+void RgvcCuller::removeTbv(int index) {
+    Tbv& b = tbv_[size_t(index)];
+    if (!b.active) return;
+    b.active = false;
+    expiry_queue_.cancel(index);
+    writeTbv(index, false);
+}
+
+void RgvcCuller::revealTbv(const Scene& scene, int index, bool during_traversal) {
+    const Tbv& b = tbv_[size_t(index)];
+    if (b.active) validity_.revealed(index, b.expiry - b.created);
+    removeTbv(index);
+    ++tbv_revealed_;
+    discretizeObject(scene, index, during_traversal);
+}
+
+void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
+    // Every dynamic object is, each frame, either written into O and I or under
+    // an active TBV. Those written last frame are written again if they were in
+    // its PVS, else they get a TBV; the others are touched only when their TBV
+    // expires or is revealed.
+    last_discretized_.swap(discretized_);
+    discretized_.clear();
+    if (frame_ == 1) {
+        for (const int index : dynamic_) discretizeObject(scene, index, false);
+    } else {
+        for (const int index : last_discretized_) {
+            if (pvs_stamp_[size_t(index)] == frame_ - 1) {
+                removeTbv(index);
+                discretizeObject(scene, index, false);
+            } else if (!tbv_[size_t(index)].active) {
+                createTbv(scene, index);
+            }
+        }
+    }
+    // Still hidden, TBV expired: a new validity period from where it is now.
+    expiry_queue_.popExpired(t_, [&](int index) {
+        removeTbv(index);
+        ++tbv_expired_;
+        validity_.expired(index);
+        createTbv(scene, index);
+    });
+    if (teleported) {
+        // The viewer's voxel jumped: it may have landed inside a boundary TBV
+        // without stepping on its boundary. Rare, so a pass over all of them.
+        for (const int index : dynamic_) {
+            const Tbv& b = tbv_[size_t(index)];
+            if (b.active && !b.edge && !b.filled && tbvMayEncloseViewer(b))
+                revealTbv(scene, index, false);
+        }
+    }
+    // TBVs of objects that can leave the grid: revealed when they touch the
+    // frustum. Backwards, because revealing moves the last entry into the freed
+    // slot.
+    for (size_t i = edge_tbvs_.size(); i-- > 0;) {
+        const int index = edge_tbvs_[i];
+        const Tbv& b = tbv_[size_t(index)];
+        const bool touches = dimensions_ == 2 ? circleMayIntersectWedge(b.centre, b.radius, *camera_)
+                                              : boxMayIntersectFrustum(b.box, *camera_);
+        if (touches) revealTbv(scene, index, false);
+    }
+}
+
+}  // namespace gridcull
