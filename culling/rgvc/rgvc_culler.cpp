@@ -302,6 +302,7 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     occlusion_.clearAll();
     open_.clearAll();
     identifiers_dynamic_.clear();
+    current_layer_ = -1;
     fillSnapshotFrame(camera);
     for (const int index : static_outside_)
         if (objectTouchesFrustum(scene, index)) addToPvs(index);
@@ -331,23 +332,8 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     snapshot_.memory = memory();
     if (snapshot_enabled_) {
         snapshot_.tbv_list.clear();
-        for (const int index : dynamic_) {
-            const Tbv& b = tbv_[size_t(index)];
-            if (!b.active) continue;
-            RgvcTbvView view;
-            view.object_index = index;
-            view.object_id = scene.objects[size_t(index)].id;
-            view.centre = b.centre;
-            view.radius = b.radius;
-            view.created = b.created;
-            view.expiry = b.expiry;
-            view.curve_centre = b.curve.centre;
-            view.curve_radius = b.curve.radius;
-            view.filled = b.filled;
-            view.edge = b.edge;
-            view.cells = b.cells;
-            snapshot_.tbv_list.push_back(view);
-        }
+        for (const int index : dynamic_)
+            if (tbv_[size_t(index)].active) snapshot_.tbv_list.push_back(tbvView(scene, index));
     }
     out_ = nullptr;
     camera_ = nullptr;
@@ -386,9 +372,51 @@ void RgvcCuller::fillSnapshotFrame(const Camera& camera) {
     snapshot_.occluders.clear();
     snapshot_.occluders3d.clear();
     snapshot_.tbv_list.clear();
+    snapshot_.reveals.clear();
+    const size_t voxels = size_t(grid_.voxelCount());
+    snapshot_.h_layer.assign(voxels, kRgvcNoLayer);
+    snapshot_.o_layer.assign(voxels, kRgvcNoLayer);
+    snapshot_.h_cause.assign(voxels, -1);
+    if (dimensions_ == 3) {
+        const size_t r = size_t(direction_map_.resolution());
+        snapshot_.direction_cause.assign(6 * r * r, -1);
+    } else {
+        snapshot_.direction_cause.clear();
+    }
     snapshot_.first_layer = 0;
     snapshot_.last_layer = -1;
     snapshot_.terminated_early = false;
+}
+
+RgvcTbvView RgvcCuller::tbvView(const Scene& scene, int index) const {
+    const Tbv& b = tbv_[size_t(index)];
+    RgvcTbvView view;
+    view.object_index = index;
+    view.object_id = scene.objects[size_t(index)].id;
+    view.centre = b.centre;
+    view.radius = b.radius;
+    view.created = b.created;
+    view.expiry = b.expiry;
+    view.curve_centre = b.curve.centre;
+    view.curve_radius = b.curve.radius;
+    view.filled = b.filled;
+    view.edge = b.edge;
+    view.cells = b.cells;
+    return view;
+}
+
+void RgvcCuller::noteOccluded(int x, int row, int32_t cause) {
+    // Rows are y + z * height, and linear indices x + width * (y + height * z).
+    const size_t v = size_t(row) * size_t(grid_.resolution.x) + size_t(x);
+    if (snapshot_.h_layer[v] != kRgvcNoLayer) return;
+    snapshot_.h_layer[v] = int32_t(current_layer_);
+    snapshot_.h_cause[v] = cause;
+}
+
+void RgvcCuller::noteOpaque(int x, int row) {
+    const size_t v = size_t(row) * size_t(grid_.resolution.x) + size_t(x);
+    if (snapshot_.o_layer[v] == kRgvcNoLayer && !occluder_.get(x, row))
+        snapshot_.o_layer[v] = int32_t(current_layer_);
 }
 
 RgvcMatrixMemory RgvcCuller::memory() const {

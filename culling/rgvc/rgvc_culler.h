@@ -172,6 +172,10 @@ private:
     // rgvc_culler.cpp
     void addToPvs(int index);
     void fillSnapshotFrame(const Camera& camera);
+    RgvcTbvView tbvView(const Scene& scene, int index) const;
+    // Snapshot only: records voxels entering H or O during the traversal.
+    void noteOccluded(int x, int row, int32_t cause);
+    void noteOpaque(int x, int row);
     void setUpFrame2d(const Camera& camera, bool& unreachable, bool& teleported);
     void setUpFrame3d(const Camera& camera, bool& unreachable, bool& teleported);
 
@@ -244,6 +248,7 @@ private:
     int64_t tbv_revealed_ = 0;
     int64_t object_updates_ = 0;
     // Per layer, while traversing.
+    int64_t current_layer_ = -1;  // -1 before the traversal
     int64_t layer_visited_ = 0;
     bool layer_all_occluded_ = true;
     bool layer_leaves_grid_ = false;

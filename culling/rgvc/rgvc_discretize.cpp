@@ -67,7 +67,11 @@ void RgvcCuller::rasterize2d(const SceneObject& object, const glm::dvec3& shift,
                 if (during_traversal && open_.get(x, y)) addToPvs(index);
             }
         },
-        [&](int y, int x0, int x1) { opaque.setRun(y, x0, x1); });
+        [&](int y, int x0, int x1) {
+            if (during_traversal && snapshot_enabled_)
+                for (int x = x0; x <= x1; ++x) noteOpaque(x, y);
+            opaque.setRun(y, x0, x1);
+        });
 }
 
 void RgvcCuller::discretizeStatic(const Scene& scene) {

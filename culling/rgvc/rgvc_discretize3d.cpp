@@ -114,7 +114,12 @@ void RgvcCuller::rasterize3d(const SceneObject& object, const glm::dvec3& shift,
             if (during_traversal && open_.get(x, row)) addToPvs(index);
         }
     };
-    auto inside = [&](int y, int z, int x0, int x1) { opaque.setRun(opaque.row(y, z), x0, x1); };
+    auto inside = [&](int y, int z, int x0, int x1) {
+        const int row = opaque.row(y, z);
+        if (during_traversal && snapshot_enabled_)
+            for (int x = x0; x <= x1; ++x) noteOpaque(x, row);
+        opaque.setRun(row, x0, x1);
+    };
     switch (object.shape) {
         case ShapeKind::Sphere:
             sphereRows(g, object.center + shift, object.radius, true, touched);

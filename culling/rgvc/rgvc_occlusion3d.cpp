@@ -109,16 +109,23 @@ int RgvcDirectionMap::faceFootprint(int face, const glm::dvec3& lo, const glm::d
     return 1;
 }
 
+void RgvcDirectionMap::cellOfPoint(const glm::dvec3& p, int& face, int& i, int& j) const {
+    const glm::dvec3 c = p - eye_;
+    const glm::dvec3 ac = glm::abs(c);
+    const int a = ac.x >= ac.y ? (ac.x >= ac.z ? 0 : 2) : (ac.y >= ac.z ? 1 : 2);
+    face = 2 * a + (c[a] >= 0.0 ? 0 : 1);
+    const double depth = ac[a] > 0.0 ? ac[a] : 1.0;
+    i = cellOf(c[(a + 1) % 3] / depth, resolution_);
+    j = cellOf(c[(a + 2) % 3] / depth, resolution_);
+}
+
 bool RgvcDirectionMap::coversBox(const glm::dvec3& lo, const glm::dvec3& hi) const {
     // Most boxes a traversal reaches are not covered: the cell of the box's
     // centre direction says so in O(1).
-    const glm::dvec3 c = (lo + hi) * 0.5 - eye_;
-    const glm::dvec3 ac = glm::abs(c);
-    const int a = ac.x >= ac.y ? (ac.x >= ac.z ? 0 : 2) : (ac.y >= ac.z ? 1 : 2);
-    if (ac[a] > 0.0) {
-        const int face = 2 * a + (c[a] >= 0.0 ? 0 : 1);
-        const int i = cellOf(c[(a + 1) % 3] / ac[a], resolution_);
-        const int j = cellOf(c[(a + 2) % 3] / ac[a], resolution_);
+    const glm::dvec3 centre = (lo + hi) * 0.5;
+    if (centre != eye_) {
+        int face, i, j;
+        cellOfPoint(centre, face, i, j);
         if (!covered(face, i, j)) return false;
     }
     std::array<DirectionRect, 6> rects;
@@ -182,6 +189,8 @@ DirectionCell RgvcDirectionMap::cell(int face, int i, int j) const {
     const double step = 2.0 / resolution_;
     DirectionCell c;
     c.face = face;
+    c.i = i;
+    c.j = j;
     c.u0 = -1.0 + step * i;
     c.u1 = i + 1 == resolution_ ? 1.0 : -1.0 + step * (i + 1);
     c.v0 = -1.0 + step * j;

@@ -63,6 +63,7 @@ struct DirectionRect {
 // A map face's cell as direction bounds: u in [u0, u1], v in [v0, v1].
 struct DirectionCell {
     int face = 0;
+    int i = 0, j = 0;
     double u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
 };
 
@@ -90,6 +91,12 @@ public:
     // Is every direction from the eye to the closed box covered?
     bool coversBox(const glm::dvec3& lo, const glm::dvec3& hi) const;
     bool covered(int face, int i, int j) const { return cells_.get(i, cells_.row(j, face)); }
+    // The index of cell (face, i, j) in face-major, row, column order.
+    size_t cellIndex(int face, int i, int j) const {
+        return (size_t(face) * size_t(resolution_) + size_t(j)) * size_t(resolution_) + size_t(i);
+    }
+    // The cell holding the direction from the eye to p (p != eye).
+    void cellOfPoint(const glm::dvec3& p, int& face, int& i, int& j) const;
     DirectionCell cell(int face, int i, int j) const;
 
     // Takes the frustum's four edge directions: cells far outside the frustum

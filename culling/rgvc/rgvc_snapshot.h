@@ -11,6 +11,7 @@
 // object indices into Scene::objects (scene.objects[i].id is the id).
 #pragma once
 #include <array>
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -78,6 +79,17 @@ struct RgvcTbvView {
     RgvcVoxelBox cells;    // 3D: the box written into Txy, Txz, Tyz; 2D: the clip box
 };
 
+// A TBV that the traversal (or a teleport, or the frustum for an object that
+// can leave the grid) revealed this frame, as it was before: TBVs at layer L
+// are tbv_list plus the reveals of layers after L.
+struct RgvcRevealView {
+    int32_t layer = -1;  // -1: revealed before the traversal
+    RgvcTbvView tbv;
+};
+
+// No layer: a voxel that never entered H (or O during the traversal).
+constexpr int32_t kRgvcNoLayer = INT32_MAX;
+
 // Bytes held by each matrix (capacities), present or not.
 struct RgvcMatrixMemory {
     size_t occluder = 0;             // O
@@ -126,6 +138,21 @@ struct RgvcSnapshot final : DebugSnapshot {
     std::vector<RgvcOccluderView> occluders;    // 2D
     std::vector<RgvcOccluder3d> occluders3d;    // 3D
     std::vector<RgvcTbvView> tbv_list;
+    std::vector<RgvcRevealView> reveals;
+
+    // Per-layer history, per voxel in RegularGrid::linearIndex order: the
+    // matrices as they were at layer L are recovered from these.
+    std::vector<int32_t> h_layer;  // the layer at which the voxel entered H, or kRgvcNoLayer
+    std::vector<int32_t> o_layer;  // the layer at which a reveal made it opaque, or kRgvcNoLayer
+                                   // (then O, if set, was set before the traversal)
+    // Why a voxel is in H: 2D, the index in `occluders` of the first occluder
+    // whose polygon marked it; 3D, the index in `occluders3d` of the occluder
+    // whose layer pass covered the direction of the voxel's centre. -1: not in H.
+    std::vector<int32_t> h_cause;
+    // 3D: per direction-map cell (face-major, then row, then column), the index
+    // in `occluders3d` of the occluder whose pass covered it, or -1.
+    std::vector<int32_t> direction_cause;
+
     int64_t first_layer = 0;
     int64_t last_layer = -1;        // the last layer traversed
     bool terminated_early = false;  // stopped after a wholly occluded layer

@@ -161,6 +161,9 @@ void RgvcCuller::removeTbv(int index) {
 void RgvcCuller::revealTbv(const Scene& scene, int index, bool during_traversal) {
     const Tbv& b = tbv_[size_t(index)];
     if (b.active) validity_.revealed(index, b.expiry - b.created);
+    if (snapshot_enabled_ && b.active)
+        snapshot_.reveals.push_back(
+            RgvcRevealView{during_traversal ? int32_t(current_layer_) : -1, tbvView(scene, index)});
     removeTbv(index);
     ++tbv_revealed_;
     discretizeObject(scene, index, during_traversal);

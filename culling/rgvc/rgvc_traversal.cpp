@@ -71,6 +71,7 @@ void RgvcCuller::traverse(const Scene& scene) {
     if (far_layers < double(last)) last = int64_t(far_layers);
     if (snapshot_enabled_) snapshot_.first_layer = first;
     for (int64_t k = first; k <= last; ++k) {
+        current_layer_ = k;
         layer_visited_ = 0;
         layer_all_occluded_ = true;
         layer_leaves_grid_ = false;
@@ -215,7 +216,12 @@ void RgvcCuller::occludeFrom(int x, int y, int64_t k) {
     for (int i = 0; i < count; ++i)
         marked += rasterizeOcclusionPolygon(
             polygons[size_t(i)], grid_, clip_x0_, clip_x1_, clip_y0_, clip_y1_,
-            [&](int row, int x0, int x1) { occlusion_.setRun(row, x0, x1); });
+            [&](int row, int x0, int x1) {
+                if (snapshot_enabled_)
+                    for (int x = x0; x <= x1; ++x)
+                        noteOccluded(x, row, int32_t(snapshot_.occluders.size()));
+                occlusion_.setRun(row, x0, x1);
+            });
     if (snapshot_enabled_) {
         RgvcOccluderView view;
         view.layer = k;

@@ -68,6 +68,7 @@ void RgvcCuller::traverse3d(const Scene& scene) {
     last = std::min(last, reach);
     if (snapshot_enabled_) snapshot_.first_layer = first;
     for (int64_t k = first; k <= last; ++k) {
+        current_layer_ = k;
         layer_visited_ = 0;
         layer_all_occluded_ = true;
         layer_leaves_grid_ = false;
@@ -152,6 +153,11 @@ void RgvcCuller::visitVoxel3d(const Scene& scene, int x, int y, int z, int64_t k
         // The cross-section test of s5.3 against every cap extruded so far.
         const glm::dvec3 lo = grid_.world.min + glm::dvec3(x, y, z) * voxel_size_;
         if (direction_map_.coversBox(lo, lo + voxel_size_)) {
+            if (snapshot_enabled_) {
+                int face, i, j;
+                direction_map_.cellOfPoint(lo + 0.5 * voxel_size_, face, i, j);
+                noteOccluded(x, row, snapshot_.direction_cause[direction_map_.cellIndex(face, i, j)]);
+            }
             occlusion_.set(x, row);
             occluded = true;
         }
@@ -300,7 +306,16 @@ void RgvcCuller::occludeFromLayer3d(int64_t k) {
             rect.i0 = std::max(rect.i0 - 1, 0), rect.i1 = std::min(rect.i1 + 1, last);
             rect.j0 = std::max(rect.j0 - 1, 0), rect.j1 = std::min(rect.j1 + 1, last);
             if (!direction_map_.clipToFrustum(rect, margin)) continue;
-            covered += direction_map_.coverCells(rect, direction_pass_, blocked);
+            if (!snapshot_enabled_) {
+                covered += direction_map_.coverCells(rect, direction_pass_, blocked);
+                continue;
+            }
+            const int32_t cause = int32_t(snapshot_.occluders3d.size());
+            covered += direction_map_.coverCells(rect, direction_pass_, [&](const DirectionCell& c) {
+                if (!blocked(c)) return false;
+                snapshot_.direction_cause[direction_map_.cellIndex(c.face, c.i, c.j)] = cause;
+                return true;
+            });
         }
         direction_covered_ = direction_covered_ || covered > 0;
         if (snapshot_enabled_)
