@@ -52,6 +52,20 @@ bool BitMatrix::allSet(int y, int x0, int x1) const {
     return true;
 }
 
+bool BitMatrix::anySet(int y, int x0, int x1) const {
+    if (x0 > x1) return false;
+    assert(y >= 0 && y < rows_ && x0 >= 0 && x1 < width_);
+    const uint64_t* row = words_.data() + size_t(y) * size_t(words_per_row_);
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    const uint64_t low = ~uint64_t(0) << (unsigned(x0) & 63u);
+    const uint64_t high = ~uint64_t(0) >> (63u - (unsigned(x1) & 63u));
+    if (w0 == w1) return (row[w0] & low & high) != 0;
+    if ((row[w0] & low) != 0 || (row[w1] & high) != 0) return true;
+    for (int w = w0 + 1; w < w1; ++w)
+        if (row[w] != 0) return true;
+    return false;
+}
+
 void BitMatrix::clearAll() { std::fill(words_.begin(), words_.end(), 0); }
 
 void BitMatrix::copyFrom(const BitMatrix& other) {

@@ -56,6 +56,8 @@ public:
     void setRun(int y, int x0, int x1);
     // Are bits x0..x1 (inclusive) of row y all set? True when x0 > x1. O(run / 64).
     bool allSet(int y, int x0, int x1) const;
+    // Is any of bits x0..x1 (inclusive) of row y set? False when x0 > x1. O(run / 64).
+    bool anySet(int y, int x0, int x1) const;
     // Clears every bit. O(words).
     void clearAll();
     // Becomes a bit-for-bit copy of `other`, which must have the same size. O(words).

@@ -4,7 +4,9 @@
 
 namespace gridcull {
 
-void IdListMatrix::resize(int width, int height, bool track_touched, int depth) {
+void IdListMatrix::resize(int width, int height, bool track_touched, int depth, bool linked) {
+    linked_ = linked;
+    std::vector<int32_t>().swap(prev_);
     assert(width >= 0 && height >= 0 && depth >= 1);
     width_ = width;
     height_ = height;
@@ -23,12 +25,15 @@ void IdListMatrix::release() {
     std::vector<int32_t>().swap(heads_);
     std::vector<Node>().swap(nodes_);
     std::vector<int32_t>().swap(touched_);
+    std::vector<int32_t>().swap(prev_);
     free_head_ = -1;
     live_nodes_ = 0;
     non_empty_ = 0;
 }
 
-void IdListMatrix::add(int x, int y, int32_t id) {
+void IdListMatrix::add(int x, int y, int32_t id) { addNode(x, y, id); }
+
+int32_t IdListMatrix::addNode(int x, int y, int32_t id) {
     assert(x >= 0 && y >= 0 && x < width_ && y < rows_);
     if (heads_.empty()) heads_.assign(size_t(width_) * size_t(rows_), -1);
     int32_t n;
@@ -38,6 +43,7 @@ void IdListMatrix::add(int x, int y, int32_t id) {
     } else {
         n = int32_t(nodes_.size());
         nodes_.push_back(Node{0, -1});
+        if (linked_) prev_.push_back(-1);
     }
     const size_t v = index(x, y);
     if (heads_[v] < 0) {
@@ -45,8 +51,30 @@ void IdListMatrix::add(int x, int y, int32_t id) {
         if (track_touched_) touched_.push_back(int32_t(v));
     }
     nodes_[size_t(n)] = Node{id, heads_[v]};
+    if (linked_) {
+        prev_[size_t(n)] = -int32_t(v) - 1;
+        if (heads_[v] >= 0) prev_[size_t(heads_[v])] = n;
+    }
     heads_[v] = n;
     ++live_nodes_;
+    return n;
+}
+
+void IdListMatrix::removeNode(int32_t n) {
+    assert(linked_ && n >= 0 && size_t(n) < nodes_.size());
+    Node& node = nodes_[size_t(n)];
+    const int32_t before = prev_[size_t(n)];
+    if (before < 0) {
+        const size_t v = size_t(-before - 1);
+        heads_[v] = node.next;
+        if (node.next < 0) --non_empty_;
+    } else {
+        nodes_[size_t(before)].next = node.next;
+    }
+    if (node.next >= 0) prev_[size_t(node.next)] = before;
+    node.next = free_head_;
+    free_head_ = n;
+    --live_nodes_;
 }
 
 bool IdListMatrix::remove(int x, int y, int32_t id) {
@@ -57,6 +85,10 @@ bool IdListMatrix::remove(int x, int y, int32_t id) {
         Node& node = nodes_[size_t(*link)];
         if (node.id == id) {
             const int32_t n = *link;
+            if (linked_) {
+                removeNode(n);
+                return true;
+            }
             *link = node.next;
             node.next = free_head_;
             free_head_ = n;
@@ -78,6 +110,7 @@ void IdListMatrix::clear() {
     }
     touched_.clear();
     nodes_.clear();
+    prev_.clear();
     free_head_ = -1;
     live_nodes_ = 0;
     non_empty_ = 0;
@@ -97,7 +130,7 @@ int IdListMatrix::listLength(int x, int y) const {
 
 size_t IdListMatrix::memoryBytes() const {
     return heads_.capacity() * sizeof(int32_t) + nodes_.capacity() * sizeof(Node) +
-           touched_.capacity() * sizeof(int32_t);
+           touched_.capacity() * sizeof(int32_t) + prev_.capacity() * sizeof(int32_t);
 }
 
 }  // namespace gridcull

@@ -27,7 +27,7 @@ public:
     // back on the next add()). `track_touched` keeps a list of voxels
     // written since the last clear() so that clear() costs only those; use it for
     // matrices cleared every frame, not for ones that mostly add and remove.
-    void resize(int width, int height, bool track_touched, int depth = 1);
+    void resize(int width, int height, bool track_touched, int depth = 1, bool linked = false);
     // Frees all storage.
     void release();
 
@@ -41,6 +41,12 @@ public:
     }
 
     void add(int x, int y, int32_t id);
+    // Handles: with `linked` set in resize(), add() returns the node that holds
+    // the id, and removeNode() takes it out in O(1) (a doubly linked list), for
+    // matrices whose ids come and go often (T). Without `linked`, add() returns
+    // the node too but only remove() may take it out.
+    int32_t addNode(int x, int y, int32_t id);
+    void removeNode(int32_t node);
     // Removes one occurrence of id from voxel (x, y); false when it is not there.
     bool remove(int x, int y, int32_t id);
     // Empties every list, keeping the capacity of the pool.
@@ -81,6 +87,9 @@ private:
     std::vector<Node> nodes_;
     int32_t free_head_ = -1;
     std::vector<int32_t> touched_;  // voxel indices, may repeat
+    // With `linked`: per node, its predecessor, or -(voxel index + 1) for a head.
+    bool linked_ = false;
+    std::vector<int32_t> prev_;
     int64_t live_nodes_ = 0;
     int64_t non_empty_ = 0;
 };

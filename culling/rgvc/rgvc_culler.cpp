@@ -140,6 +140,7 @@ void RgvcCuller::reset(const Scene& scene) {
     rejected_stamp_.assign(n, 0);
     discretized_stamp_.assign(n, 0);
     tbv_.assign(n, Tbv{});
+    tbv_nodes_.assign(n, {});
     tbv_seen_.assign(n, 0);
     tbv_test_ = 0;
     expiry_queue_.reset(n);
@@ -200,10 +201,17 @@ void RgvcCuller::reset(const Scene& scene) {
         static_occluder_.release();
     identifiers_static_.resize(w, h, false, d);
     identifiers_dynamic_.resize(w, h, true, d);
-    tbv_matrix_.resize(w, h, false);
     if (dimensions_ == 3) {
-        tbv_xz_.resize(w, d, false);
-        tbv_yz_.resize(h, d, false);
+        holds_static_.resize(w, h, d);
+        holds_dynamic_.resize(w, h, d);
+    } else {
+        holds_static_.release();
+        holds_dynamic_.release();
+    }
+    tbv_matrix_.resize(w, h, false, 1, true);
+    if (dimensions_ == 3) {
+        tbv_xz_.resize(w, d, false, 1, true);
+        tbv_yz_.resize(h, d, false, 1, true);
         direction_map_.resize(
             RgvcDirectionMap::resolutionFor(std::max({w, h, d})));
         direction_pass_ = direction_map_.restartPasses();
@@ -302,6 +310,7 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     occlusion_.clearAll();
     open_.clearAll();
     identifiers_dynamic_.clear();
+    if (dimensions_ == 3) holds_dynamic_.clearAll();
     current_layer_ = -1;
     fillSnapshotFrame(camera);
     for (const int index : static_outside_)
@@ -427,7 +436,7 @@ RgvcMatrixMemory RgvcCuller::memory() const {
     m.identifiers_static = identifiers_static_.memoryBytes();
     m.identifiers_dynamic = identifiers_dynamic_.memoryBytes();
     m.tbv = tbv_matrix_.memoryBytes() + tbv_xz_.memoryBytes() + tbv_yz_.memoryBytes();
-    m.traversal = open_.memoryBytes();
+    m.traversal = open_.memoryBytes() + holds_static_.memoryBytes() + holds_dynamic_.memoryBytes();
     m.direction_map = direction_map_.memoryBytes();
     return m;
 }

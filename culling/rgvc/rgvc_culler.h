@@ -22,8 +22,9 @@
 //     discretized at once); early termination after a layer whose frustum
 //     voxels all block.
 //  3. Occluder extension and 4. occlusion computation: 2D (s4.3, s4.4;
-//     rgvc_occlusion.h) from each non-occluded opaque voxel, an L-shaped
-//     extended occluder and its occlusion polygon rasterized into H; 3D (s5.3;
+//     rgvc_occlusion.h) from each non-occluded opaque voxel, an extended
+//     occluder (the convex L or, with --rgvc-extension 1, the staircase) and its
+//     occlusion polygons rasterized into H; 3D (s5.3;
 //     rgvc_occlusion3d.h) each layer's blocking voxels extruded from the eye
 //     into a direction map, against which later voxels are marked in H.
 //
@@ -46,7 +47,9 @@
 //    starts at the nearer end of that part.
 //  - 3D: the frustum has no near plane (rgvc_frustum3d.h says why), and opaque
 //    voxels in front of the near plane do not occlude.
-//  - Occluder extension is the paper's convex (L-shaped) variant only in 2D.
+//  - 2D occluder extension: the paper's convex L or its staircase (non-convex)
+//    variant, RgvcOptions::extension; a staircase's non-convex hidden region is
+//    covered by its two Ls' convex polygons (rgvc_occlusion.h).
 //  - Objects not wholly inside the grid are also kept whenever they touch the
 //    frustum (their parts outside the grid are invisible to the matrices).
 //  - An object found in a visible voxel joins the PVS only if its own bounds
@@ -78,8 +81,9 @@
 // written into O and I this frame).
 // Cost per frame: O(objects in the last PVS + TBVs expiring or revealed) for the
 // bookkeeping, O(voxels visited) for the traversal, plus the discretization of
-// those objects and the occlusion work (2D: one polygon per occluder; 3D: the
-// direction-map cells under the layer's new occluders, tested once per layer).
+// those objects and the occlusion work (2D: up to two polygons per L of an
+// occluder, one L or a staircase of two; 3D: the direction-map cells under the
+// layer's new occluders, tested once per layer).
 // Buffers are sized in reset(); a steady state allocates nothing.
 #pragma once
 #include <cstdint>
@@ -167,6 +171,7 @@ private:
     void visitShell(const Scene& scene, int64_t k);
     void visitVoxel3d(const Scene& scene, int x, int y, int z, int64_t k);
     void revealTbvsAt3d(const Scene& scene, int x, int y, int z);
+    bool visitEmptyRun3d(int x0, int x1, int y, int z);
     void occludeFromLayer3d(int64_t k);
     bool blocksInLayer3d(int x, int y, int z) const;
     // rgvc_culler.cpp
@@ -192,6 +197,10 @@ private:
     BitMatrix open_;                    // voxels the traversal passed non-occluded this frame
     IdListMatrix identifiers_static_;   // I, static objects
     IdListMatrix identifiers_dynamic_;  // I, dynamic objects, rebuilt every frame
+    // 3D: one bit per voxel whose static / dynamic I list is not empty, so that
+    // the traversal reads a dense bitmap, not a list head, for an empty voxel.
+    BitMatrix holds_static_;
+    BitMatrix holds_dynamic_;
     IdListMatrix tbv_matrix_;           // T (2D), Txy (3D)
     IdListMatrix tbv_xz_;               // Txz (3D)
     IdListMatrix tbv_yz_;               // Tyz (3D)
@@ -209,6 +218,7 @@ private:
     std::vector<int64_t> pvs_stamp_;       // == frame_ once in this frame's PVS
     std::vector<int64_t> rejected_stamp_;  // == frame_ once found outside the frustum
     std::vector<Tbv> tbv_;
+    std::vector<std::vector<uint64_t>> tbv_nodes_;  // per object: (plane << 32 | node) in T
     TbvExpiryQueue expiry_queue_;
     TbvValidityPeriods validity_;
     std::vector<int> edge_tbvs_;         // object indices with edge TBVs

@@ -105,8 +105,10 @@ void RgvcCuller::rasterize3d(const SceneObject& object, const glm::dvec3& shift,
     IdListMatrix& ids = is_static ? identifiers_static_ : identifiers_dynamic_;
     BitMatrix& opaque = is_static ? static_occluder_ : occluder_;
     const VoxelAxes g{grid_.world.min, voxel_size_, grid_.resolution};
+    BitMatrix& holds = is_static ? holds_static_ : holds_dynamic_;
     auto touched = [&](int y, int z, int x0, int x1) {
         const int row = ids.row(y, z);
+        holds.setRun(row, x0, x1);
         for (int x = x0; x <= x1; ++x) {
             ids.add(x, row, int32_t(index));
             // The traversal has passed this voxel non-occluded and will not come

@@ -44,6 +44,12 @@ void RgvcDirectionMap::resize(int resolution) {
 void RgvcDirectionMap::begin(const glm::dvec3& eye) {
     eye_ = eye;
     cells_.clearAll();
+    for (int face = 0; face < 6; ++face) {
+        DirectionRect& b = covered_bounds_[size_t(face)];
+        b.face = face;
+        b.i0 = b.j0 = resolution_;
+        b.i1 = b.j1 = -1;
+    }
 }
 
 uint32_t RgvcDirectionMap::restartPasses() {
@@ -122,11 +128,23 @@ void RgvcDirectionMap::cellOfPoint(const glm::dvec3& p, int& face, int& i, int& 
 bool RgvcDirectionMap::coversBox(const glm::dvec3& lo, const glm::dvec3& hi) const {
     // Most boxes a traversal reaches are not covered: the cell of the box's
     // centre direction says so in O(1).
-    const glm::dvec3 centre = (lo + hi) * 0.5;
-    if (centre != eye_) {
-        int face, i, j;
-        cellOfPoint(centre, face, i, j);
-        if (!covered(face, i, j)) return false;
+    const glm::dvec3 c = (lo + hi) * 0.5 - eye_;
+    const glm::dvec3 ac = glm::abs(c);
+    const int a = ac.x >= ac.y ? (ac.x >= ac.z ? 0 : 2) : (ac.y >= ac.z ? 1 : 2);
+    if (ac[a] > 0.0) {
+        const int face = 2 * a + (c[a] >= 0.0 ? 0 : 1);
+        const DirectionRect& b = covered_bounds_[size_t(face)];
+        if (b.empty()) return false;
+        // The centre's face coordinates against the covered cells' bounds,
+        // multiplied out: u = c_b / depth lies in [u(i0), u(i1 + 1)].
+        const double step = 2.0 / resolution_, depth = ac[a];
+        const double cb = c[(a + 1) % 3], cc = c[(a + 2) % 3];
+        if (cb < (-1.0 + step * b.i0) * depth || cb > (-1.0 + step * (b.i1 + 1)) * depth ||
+            cc < (-1.0 + step * b.j0) * depth || cc > (-1.0 + step * (b.j1 + 1)) * depth)
+            return false;
+        int f, i, j;
+        cellOfPoint(lo + (hi - lo) * 0.5, f, i, j);
+        if (!covered(f, i, j)) return false;
     }
     std::array<DirectionRect, 6> rects;
     const int n = footprint(lo, hi, rects);
@@ -183,6 +201,19 @@ bool RgvcDirectionMap::clipToFrustum(DirectionRect& rect, int margin) const {
     rect.j0 = std::max(rect.j0, f.j0 - margin);
     rect.j1 = std::min(rect.j1, f.j1 + margin);
     return !rect.empty();
+}
+
+bool RgvcDirectionMap::mayCoverPartOf(const glm::dvec3& lo, const glm::dvec3& hi) const {
+    std::array<DirectionRect, 6> rects;
+    const int n = footprint(lo, hi, rects);
+    if (n < 0) return true;
+    for (int k = 0; k < n; ++k) {
+        const DirectionRect& r = rects[size_t(k)];
+        const DirectionRect& b = covered_bounds_[size_t(r.face)];
+        if (!b.empty() && r.i0 <= b.i1 && r.i1 >= b.i0 && r.j0 <= b.j1 && r.j1 >= b.j0)
+            return true;
+    }
+    return false;
 }
 
 DirectionCell RgvcDirectionMap::cell(int face, int i, int j) const {

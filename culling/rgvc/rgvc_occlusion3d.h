@@ -25,6 +25,11 @@
 //  - Blocking voxels are the layer's occluded voxels (H) and its opaque ones (O)
 //    that lie wholly beyond the near plane: a solid cut by the near plane does
 //    not hide what its clipped part would have hidden (the oracle sees through).
+//  - With the eye inside the grid's box, rays that leave the layer's box
+//    outside the grid count as blocked: they never come back into the grid, so
+//    they cannot reach what the map is asked about (voxels of the grid). This
+//    lets a wall that spans the grid hide everything behind it, up to the
+//    grid's sides.
 //  - Each test is made on bounding rectangles (a cell's rays where they meet a
 //    face plane; a voxel's directions on a map face), supersets of the exact
 //    regions, so it can only miss occlusion, never invent it.
@@ -39,6 +44,7 @@
 // c = (a + 2) % 3, and cell (i, j) holds the directions (r_a, r_b, r_c) =
 // (s, u, v) with u in [-1 + 2i/R, -1 + 2(i+1)/R], v likewise with j.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -90,6 +96,9 @@ public:
                   std::array<DirectionRect, 6>& out) const;
     // Is every direction from the eye to the closed box covered?
     bool coversBox(const glm::dvec3& lo, const glm::dvec3& hi) const;
+    // False when no part of the box can be covered: its footprint misses every
+    // covered cell's bounds (a quick test for whole runs of voxels).
+    bool mayCoverPartOf(const glm::dvec3& lo, const glm::dvec3& hi) const;
     bool covered(int face, int i, int j) const { return cells_.get(i, cells_.row(j, face)); }
     // The index of cell (face, i, j) in face-major, row, column order.
     size_t cellIndex(int face, int i, int j) const {
@@ -122,6 +131,9 @@ public:
                 tried = pass;
                 if (blocked(cell(rect.face, i, j))) {
                     cells_.set(i, row);
+                    DirectionRect& b = covered_bounds_[size_t(rect.face)];
+                    b.i0 = std::min(b.i0, i), b.i1 = std::max(b.i1, i);
+                    b.j0 = std::min(b.j0, j), b.j1 = std::max(b.j1, j);
                     ++n;
                 }
             }
@@ -141,6 +153,9 @@ private:
     int resolution_ = 0;
     glm::dvec3 eye_{0.0};
     std::array<DirectionRect, 6> frustum_cells_{};  // per face; empty when it has none
+    // Per face, the cells holding every covered one (empty when none is): most
+    // boxes a traversal asks about lie outside, found without a division.
+    std::array<DirectionRect, 6> covered_bounds_{};
     BitMatrix cells_;              // R x R x 6
     std::vector<uint32_t> tried_;  // per cell, the last pass that tried it
 };

@@ -61,7 +61,8 @@ struct RgvcOccluderView {
     int64_t layer = 0;  // the chess layer in which its initial voxel was reached
     RgvcExtendedOccluder occluder;
     int polygon_count = 0;
-    std::array<RgvcOcclusionPolygon, 2> polygons{};
+    // [0, polygon_count) are used: up to two per L, so four for a staircase.
+    RgvcOcclusionPolygons polygons{};
     int64_t voxels_occluded = 0;  // voxels its polygons marked in H (some may repeat)
 };
 
@@ -98,7 +99,7 @@ struct RgvcMatrixMemory {
     size_t identifiers_static = 0;   // I, static objects' lists
     size_t identifiers_dynamic = 0;  // I, dynamic objects' lists
     size_t tbv = 0;                  // T (Txy, Txz and Tyz in 3D), only with dynamic objects
-    size_t traversal = 0;            // the visited-and-not-occluded scratch bits
+    size_t traversal = 0;  // scratch bits: visited and not occluded; 3D: voxels with I ids
     size_t direction_map = 0;        // 3D: the occlusion direction map
 
     size_t total() const {

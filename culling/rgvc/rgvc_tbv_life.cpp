@@ -125,28 +125,29 @@ void RgvcCuller::writeTbv(int index, bool add) {
         }
         return;
     }
+    // Adding records each node written; removing takes those nodes out in O(1)
+    // each (a cell of T may hold many TBVs' ids).
+    std::vector<uint64_t>& nodes = tbv_nodes_[size_t(index)];
+    IdListMatrix* planes[3] = {&tbv_matrix_, &tbv_xz_, &tbv_yz_};
+    if (!add) {
+        for (const uint64_t node : nodes) planes[node >> 32]->removeNode(int32_t(node & 0xffffffffu));
+        nodes.clear();
+        return;
+    }
     const int32_t id = int32_t(index);
-    auto put = [&](IdListMatrix& m, int x, int y) {
-        if (add)
-            m.add(x, y, id);
-        else
-            m.remove(x, y, id);
+    auto put = [&](int plane, int x, int y) {
+        nodes.push_back((uint64_t(plane) << 32) | uint64_t(uint32_t(planes[plane]->addNode(x, y, id))));
     };
     if (dimensions_ == 3) {
         forEachTbvProjectionCell(b.cells, b.filled, [&](TbvPlane plane, int a, int c) {
-            switch (plane) {
-                case TbvPlane::Xy: put(tbv_matrix_, a, c); break;
-                case TbvPlane::Xz: put(tbv_xz_, a, c); break;
-                case TbvPlane::Yz: put(tbv_yz_, a, c); break;
-            }
+            put(int(plane), a, c);
         });
     } else if (b.filled) {
         forEachTbvFilledSpanClipped(b.curve, b.cells, [&](int y, int x0, int x1) {
-            for (int x = x0; x <= x1; ++x) put(tbv_matrix_, x, y);
+            for (int x = x0; x <= x1; ++x) put(0, x, y);
         });
     } else {
-        forEachTbvBoundaryVoxelClipped(b.curve, b.cells,
-                                       [&](int x, int y) { put(tbv_matrix_, x, y); });
+        forEachTbvBoundaryVoxelClipped(b.curve, b.cells, [&](int x, int y) { put(0, x, y); });
     }
 }
 

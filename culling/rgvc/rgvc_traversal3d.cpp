@@ -136,6 +136,18 @@ void RgvcCuller::visitShell(const Scene& scene, int64_t k) {
             at[r] = 0;
             int64_t i0 = std::max<int64_t>(lo[r], 0), i1 = std::min<int64_t>(hi[r], res[r] - 1);
             if (i0 > i1 || !frustum3_.rowRange(r, at, i0, i1)) continue;
+            if (r == 0 && !snapshot_enabled_) {
+                // Rows along x, by words: a stretch with nothing to do is visited
+                // at once.
+                for (int64_t c0 = i0; c0 <= i1;) {
+                    const int64_t c1 = std::min(i1, c0 | 63);
+                    if (!visitEmptyRun3d(int(c0), int(c1), int(at.y), int(at.z)))
+                        for (int64_t i = c0; i <= c1; ++i)
+                            visitVoxel3d(scene, int(i), int(at.y), int(at.z), k);
+                    c0 = c1 + 1;
+                }
+                continue;
+            }
             for (int64_t i = i0; i <= i1; ++i) {
                 at[r] = i;
                 visitVoxel3d(scene, int(at.x), int(at.y), int(at.z), k);
@@ -169,10 +181,39 @@ void RgvcCuller::visitVoxel3d(const Scene& scene, int x, int y, int z, int64_t k
         occluder_.get(x, row) && frustum3_.minDepthOfVoxel({x, y, z}) >= frustum3_.near();
     if (!blocks) layer_all_occluded_ = false;
     open_.set(x, row);
-    identifiers_static_.forEach(x, row, [&](int32_t index) { addToPvs(index); });
-    identifiers_dynamic_.forEach(x, row, [&](int32_t index) { addToPvs(index); });
+    if (holds_static_.get(x, row))
+        identifiers_static_.forEach(x, row, [&](int32_t index) { addToPvs(index); });
+    if (holds_dynamic_.get(x, row))
+        identifiers_dynamic_.forEach(x, row, [&](int32_t index) { addToPvs(index); });
     if (has_dynamic_) revealTbvsAt3d(scene, x, y, z);
     if (blocks) layer_occluders_.push_back({x, y, z});
+}
+
+bool RgvcCuller::visitEmptyRun3d(int x0, int x1, int y, int z) {
+    // Empty: no voxel in H, O or I, none holding a TBV by the 2-of-3 test, and
+    // none that the direction map could cover. Each such voxel would only be
+    // counted and marked open, one by one, in visitVoxel3d.
+    const int row = occlusion_.row(y, z);
+    if (occlusion_.anySet(row, x0, x1) || occluder_.anySet(row, x0, x1) ||
+        holds_static_.anySet(row, x0, x1) || holds_dynamic_.anySet(row, x0, x1))
+        return false;
+    if (has_dynamic_) {
+        const bool yz = !tbv_yz_.empty(y, z);
+        for (int x = x0; x <= x1; ++x)
+            if (int(yz) + int(!tbv_matrix_.empty(x, y)) + int(!tbv_xz_.empty(x, z)) >= 2)
+                return false;
+    }
+    if (direction_covered_) {
+        const glm::dvec3 lo = grid_.world.min + glm::dvec3(x0, y, z) * voxel_size_;
+        const glm::dvec3 hi = grid_.world.min + glm::dvec3(x1 + 1, y + 1, z + 1) * voxel_size_;
+        if (direction_map_.mayCoverPartOf(lo, hi)) return false;
+    }
+    open_.setRun(row, x0, x1);
+    const int64_t n = x1 - x0 + 1;
+    voxels_visited_ += n;
+    layer_visited_ += n;
+    layer_all_occluded_ = false;
+    return true;
 }
 
 void RgvcCuller::revealTbvsAt3d(const Scene& scene, int x, int y, int z) {
@@ -206,9 +247,13 @@ void RgvcCuller::revealTbvsAt3d(const Scene& scene, int x, int y, int z) {
 }
 
 bool RgvcCuller::blocksInLayer3d(int x, int y, int z) const {
+    // A ray that leaves the layer's box outside the grid, from an eye inside the
+    // grid's box, is outside that box for good: it reaches no voxel of the grid
+    // any more (objects reaching outside the grid are kept by their own test),
+    // so for the voxels it can hide it counts as blocked.
     if (x < 0 || y < 0 || z < 0 || x >= grid_.resolution.x || y >= grid_.resolution.y ||
         z >= grid_.resolution.z)
-        return false;
+        return eye_in_grid_;
     const int row = occlusion_.row(y, z);
     if (occlusion_.get(x, row)) return true;
     return occluder_.get(x, row) && frustum3_.minDepthOfVoxel({x, y, z}) >= frustum3_.near();
