@@ -63,8 +63,8 @@
 //  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), adaptive by
 //    default (Sudarsky & Gotsman, s3.4; culling/tbv/tbv_validity.h) so that a
 //    period too long for the scene corrects itself instead of having its TBV
-//    revealed every frame, spread over [0.75, 1] times the period
-//    (kTbvValiditySpread) so that TBVs made together do not expire together,
+//    revealed every frame, spread (spreadValidity) so that TBVs made together
+//    do not expire together,
 //    and shortened (as the paper suggests) so that the TBV
 //    leaves the viewer's voxel outside; when even one frame's validity would
 //    not, the TBV is written filled. When the viewer's voxel jumps by more than

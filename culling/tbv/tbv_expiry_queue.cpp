@@ -78,6 +78,7 @@ double spreadValidity(double validity, int object, uint64_t serial) {
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
     z ^= z >> 31;
     const double unit = double(z >> 11) * (1.0 / 9007199254740992.0);  // [0, 1)
+    if (serial == 0) return validity * (kTbvFirstSpread + (1.0 - kTbvFirstSpread) * unit);
     return validity * (1.0 - kTbvValiditySpread * unit);
 }
 

@@ -69,11 +69,14 @@ private:
 };
 
 // Validity periods spread so that TBVs made in the same frame do not all
-// expire in the same later frame: `validity` scaled by a factor in
-// [1 - kTbvValiditySpread, 1], a hash of the object and of how many TBVs it has
-// had. Renewals then come at an even rate instead of in bursts (a burst is a
-// stalled frame). Deterministic, so runs repeat exactly.
+// expire in the same later frame (a burst of renewals is a stalled frame):
+// `validity` scaled by a factor that hashes the object and how many TBVs it has
+// had. An object's first TBV (serial 0), when every hidden object gets one at
+// once, takes a factor in [kTbvFirstSpread, 1], which scatters the first
+// expiries over most of a period; later ones take [1 - kTbvValiditySpread, 1],
+// which keeps them scattered. Deterministic, so runs repeat exactly.
 constexpr double kTbvValiditySpread = 0.25;
+constexpr double kTbvFirstSpread = 0.05;
 double spreadValidity(double validity, int object, uint64_t serial);
 
 }  // namespace gridcull
