@@ -12,46 +12,22 @@
 #include "culling/oracle/exact_oracle.h"
 #include "culling/rgvc/rgvc_culler.h"
 #include "tests/common/oracle_test_scenes.h"
+#include "tests/culling/rgvc/rgvc_checked_run.h"
 
 namespace gridcull {
 namespace {
 
 using test::addBox;
 using test::addSphere;
-
-bool has(const std::vector<int>& ids, int id) {
-    return std::binary_search(ids.begin(), ids.end(), id);
-}
+using test::has;
+using test::moving;
+using test::runChecked;
 
 // [0, 100]^3 in 50^3 voxels of 2 units, frames of 0.1 s.
 Scene roomScene() {
     Scene scene = test::makeScene(3, Aabb{{0, 0, 0}, {100, 100, 100}}, {50, 50, 50});
     scene.dt = 0.1;
     return scene;
-}
-
-void moving(Scene& scene, const glm::dvec3& velocity) {
-    SceneObject& o = scene.objects.back();
-    o.motion.kind = MotionKind::Linear;
-    o.motion.velocity = velocity;
-    o.motion.max_speed = glm::length(velocity);
-}
-
-std::vector<FrameResult> runChecked(const Scene& scene, int frames, RgvcCuller& rgvc) {
-    ExactOracle exact;
-    rgvc.reset(scene);
-    exact.reset(scene);
-    std::vector<FrameResult> results;
-    for (int f = 0; f < frames; ++f) {
-        const double t = scene.timeOfFrame(f);
-        const Camera camera = cameraAt(scene, t);
-        FrameResult got, want;
-        rgvc.cull(scene, camera, t, got);
-        exact.cull(scene, camera, t, want);
-        EXPECT_TRUE(test::isSubset(want.pvs, got.pvs)) << "frame " << f;
-        results.push_back(got);
-    }
-    return results;
 }
 
 int64_t total(const std::vector<FrameResult>& frames, Counter c) {

@@ -13,47 +13,22 @@
 #include "culling/registry/registry.h"
 #include "culling/rgvc/rgvc_culler.h"
 #include "tests/common/oracle_test_scenes.h"
+#include "tests/culling/rgvc/rgvc_checked_run.h"
 
 namespace gridcull {
 namespace {
 
 using test::addBox;
 using test::addSphere;
-
-bool has(const std::vector<int>& ids, int id) {
-    return std::binary_search(ids.begin(), ids.end(), id);
-}
+using test::has;
+using test::moving;
+using test::runChecked;
 
 // [0, 100]^2 in 100 x 100 voxels of 1 unit.
 Scene floorScene() {
     Scene scene = test::makeScene(2, Aabb{{0, 0, 0}, {100, 100, 0}}, {100, 100, 1});
     scene.dt = 0.1;
     return scene;
-}
-
-void moving(Scene& scene, const glm::dvec3& velocity) {
-    SceneObject& o = scene.objects.back();
-    o.motion.kind = MotionKind::Linear;
-    o.motion.velocity = velocity;
-    o.motion.max_speed = glm::length(velocity);
-}
-
-// Culls frames 0..frames-1 with rgvc and exact; fails on a false cull.
-std::vector<FrameResult> runChecked(const Scene& scene, int frames, RgvcCuller& rgvc) {
-    ExactOracle exact;
-    rgvc.reset(scene);
-    exact.reset(scene);
-    std::vector<FrameResult> results;
-    for (int f = 0; f < frames; ++f) {
-        const double t = scene.timeOfFrame(f);
-        const Camera camera = cameraAt(scene, t);
-        FrameResult got, want;
-        rgvc.cull(scene, camera, t, got);
-        exact.cull(scene, camera, t, want);
-        EXPECT_TRUE(test::isSubset(want.pvs, got.pvs)) << "frame " << f;
-        results.push_back(got);
-    }
-    return results;
 }
 
 TEST(RgvcCuller, RegistryOffersItForBothDimensions) {

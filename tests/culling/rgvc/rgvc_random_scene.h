@@ -52,6 +52,40 @@ inline glm::dvec3 rgvcRandomViewpoint(SeededRandom& rng, const Scene& scene) {
     return p;
 }
 
+// Thresholds on a uniform draw: below `still` the object stays, below `linear`
+// it moves in a straight line, below `random` on a random walk, else on three
+// keyframes.
+struct RgvcMotionMix {
+    double still, linear, random;
+};
+
+// Gives `o` a motion of the kind `draw` picks from `mix`, at up to `speed`.
+inline void rgvcRandomMotion(SeededRandom& rng, SceneObject& o, int dimensions, uint64_t seed,
+                             double draw, double speed, RgvcMotionMix mix) {
+    if (draw < mix.still) return;
+    if (draw < mix.linear) {
+        o.motion.kind = MotionKind::Linear;
+        o.motion.velocity = randomDirection(rng, dimensions) * speed;
+        o.motion.max_speed = glm::length(o.motion.velocity);
+    } else if (draw < mix.random) {
+        o.motion.kind = MotionKind::Random;
+        o.motion.max_speed = speed;
+        buildRandomWalk(o.motion, dimensions, seed, o.id, 8, 0.3);
+    } else {
+        o.motion.kind = MotionKind::Keyframes;
+        glm::dvec3 p = o.anchor;
+        double best = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 next = p + randomDirection(rng, dimensions) * (speed * 0.7);
+            o.motion.keys.push_back(PositionKey{0.7 * k, p});
+            if (k > 0)
+                best = std::max(best, glm::length(p - o.motion.keys[size_t(k) - 1].position) / 0.7);
+            p = next;
+        }
+        o.motion.max_speed = best;
+    }
+}
+
 inline Scene rgvcRandomScene(uint64_t seed) {
     SeededRandom rng(seed);
     const double width = rng.uniform(40.0, 160.0);
@@ -98,33 +132,9 @@ inline Scene rgvcRandomScene(uint64_t seed) {
             }
             addPolygon(scene, id, points);
         }
-        SceneObject& o = scene.objects.back();
         const double motion = rng.uniform();
         const double speed = rng.uniform(0.0, 0.4) * size;  // world units per second
-        if (motion < 0.45) {
-            // static
-        } else if (motion < 0.75) {
-            o.motion.kind = MotionKind::Linear;
-            o.motion.velocity = randomDirection(rng, 2) * speed;
-            o.motion.max_speed = glm::length(o.motion.velocity);
-        } else if (motion < 0.9) {
-            o.motion.kind = MotionKind::Random;
-            o.motion.max_speed = speed;
-            buildRandomWalk(o.motion, 2, seed, id, 8, 0.3);
-        } else {
-            o.motion.kind = MotionKind::Keyframes;
-            glm::dvec3 p = o.anchor;
-            double best = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec3 next = p + randomDirection(rng, 2) * (speed * 0.7);
-                o.motion.keys.push_back(PositionKey{0.7 * k, p});
-                if (k > 0)
-                    best = std::max(best,
-                                    glm::length(p - o.motion.keys[size_t(k) - 1].position) / 0.7);
-                p = next;
-            }
-            o.motion.max_speed = best;
-        }
+        rgvcRandomMotion(rng, scene.objects.back(), 2, seed, motion, speed, {0.45, 0.75, 0.9});
     }
     scene.finalize();
 

@@ -17,6 +17,7 @@
 #include "culling/scene/scene.h"
 #include "culling/scene/seeded_random.h"
 #include "tests/common/oracle_test_scenes.h"
+#include "tests/culling/rgvc/rgvc_random_scene.h"
 
 namespace gridcull::test {
 
@@ -126,31 +127,9 @@ inline Scene rgvcRandomScene3d(uint64_t seed) {
                     : shape < 0.8 ? notchedMesh(r)
                                   : quadMesh(r));
         }
-        SceneObject& o = scene.objects.back();
         const double motion = rng.uniform();
         const double speed = rng.uniform(0.0, 0.3) * small;
-        if (motion < 0.4) {
-            // static
-        } else if (motion < 0.7) {
-            o.motion.kind = MotionKind::Linear;
-            o.motion.velocity = randomDirection(rng, 3) * speed;
-            o.motion.max_speed = glm::length(o.motion.velocity);
-        } else if (motion < 0.85) {
-            o.motion.kind = MotionKind::Random;
-            o.motion.max_speed = speed;
-            buildRandomWalk(o.motion, 3, seed, o.id, 8, 0.3);
-        } else {
-            o.motion.kind = MotionKind::Keyframes;
-            glm::dvec3 p = o.anchor;
-            double best = 0.0;
-            for (int key = 0; key < 3; ++key) {
-                o.motion.keys.push_back(PositionKey{0.7 * key, p});
-                const glm::dvec3 next = p + randomDirection(rng, 3) * (speed * 0.7);
-                best = std::max(best, speed);
-                p = next;
-            }
-            o.motion.max_speed = best;
-        }
+        rgvcRandomMotion(rng, scene.objects.back(), 3, seed, motion, speed, {0.4, 0.7, 0.85});
     }
     scene.finalize();
 
