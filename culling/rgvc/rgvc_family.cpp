@@ -17,6 +17,10 @@ const KnobTable<RgvcOptions>& rgvcKnobs() {
                     "scene", "the scene's grid.resolution",
                     "voxels along the world's longest axis; finer: more voxels to traverse, "
                     "tighter occlusion"),
+        knob("rgvc-extension", &RgvcOptions::extension, 0, 1,
+             "2D occluder extension: 0, the convex L (step 3 only when step 1 added nothing); "
+             "1, the staircase (step 3 always, following concave occluders; up to 4 occlusion "
+             "polygons an occluder instead of 2)"),
     };
     return table;
 }
@@ -25,7 +29,8 @@ FamilyEntry rgvcFamily() {
     FamilyEntry family;
     family.id = "rgvc";
     family.title = "Regular-grid culling (Batagelo & Wu)";
-    family.algorithms = {{"rgvc", kRuns2d | kRuns3d, "regular-grid culling with temporal bounding volumes"}};
+    family.algorithms = {
+        {"rgvc", kRuns2d | kRuns3d, "regular-grid culling with temporal bounding volumes"}};
     family.knobs = rgvcKnobs().knobs();
     family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
         return std::make_unique<RgvcCuller>(rgvcKnobs().read(*request.knobs));

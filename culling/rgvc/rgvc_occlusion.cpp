@@ -88,15 +88,24 @@ bool rectShadow(const Rect& r, glm::dvec2 apex, double slack, RgvcOcclusionPolyg
 }  // namespace
 
 bool RgvcExtendedOccluder::covers(glm::ivec2 v) const {
-    if (v.y == corner.y) {
-        const int along = (v.x - corner.x) * -toward.x;
-        if (along >= 0 && along <= leg_x) return true;
-    }
-    if (v.x == corner.x) {
-        const int along = (v.y - corner.y) * -toward.y;
-        if (along >= 0 && along <= leg_y) return true;
+    for (int i = 0; i < part_count; ++i) {
+        const RgvcOccluderL& l = parts[size_t(i)];
+        if (v.y == l.corner.y) {
+            const int along = (v.x - l.corner.x) * -toward.x;
+            if (along >= 0 && along <= l.leg_x) return true;
+        }
+        if (v.x == l.corner.x) {
+            const int along = (v.y - l.corner.y) * -toward.y;
+            if (along >= 0 && along <= l.leg_y) return true;
+        }
     }
     return false;
+}
+
+int RgvcExtendedOccluder::voxelCount() const {
+    int n = 0;
+    for (int i = 0; i < part_count; ++i) n += 1 + parts[size_t(i)].leg_x + parts[size_t(i)].leg_y;
+    return n - (part_count - 1);  // the Ls of a staircase share the initial voxel
 }
 
 bool RgvcOcclusionPolygon::containsPoint(glm::dvec2 p, double margin) const {
@@ -105,43 +114,60 @@ bool RgvcOcclusionPolygon::containsPoint(glm::dvec2 p, double margin) const {
     return plane_count > 0;
 }
 
-int occlusionPolygons(const RgvcExtendedOccluder& occ, const RegularGrid& grid, glm::dvec2 apex,
-                      std::array<RgvcOcclusionPolygon, 2>& out) {
+namespace {
+
+// The occlusion polygons of one L (its corner facing `toward`), appended to
+// out[n..): one when the apex lies in the quadrant the corner faces, else one
+// per leg. Returns the new n.
+int lShadows(const RgvcOccluderL& l, glm::ivec2 toward, const RegularGrid& grid, glm::dvec2 apex,
+             RgvcOcclusionPolygons& out, int n) {
     const glm::dvec3 d = grid.voxelSize();
     const double slack = kOcclusionSlack * std::max(d.x, d.y);
-    const Rect leg_x = voxelRect(grid, occ.corner, occ.legXEnd());
-    const Rect leg_y = voxelRect(grid, occ.corner, occ.legYEnd());
-    if (occ.leg_x == 0 || occ.leg_y == 0) {
+    const glm::ivec2 x_end = l.corner + glm::ivec2(-toward.x * l.leg_x, 0);
+    const glm::ivec2 y_end = l.corner + glm::ivec2(0, -toward.y * l.leg_y);
+    const Rect leg_x = voxelRect(grid, l.corner, x_end);
+    const Rect leg_y = voxelRect(grid, l.corner, y_end);
+    if (l.leg_x == 0 || l.leg_y == 0) {
         // A straight occluder (or one voxel): a single rectangle.
-        return rectShadow(occ.leg_x > 0 ? leg_x : leg_y, apex, slack, out[0]) ? 1 : 0;
+        return rectShadow(l.leg_x > 0 ? leg_x : leg_y, apex, slack, out[size_t(n)]) ? n + 1 : n;
     }
     // The corner of the corner voxel facing the viewer; the legs leave it away
     // from the viewer along +-x and +-y.
-    const Rect c = voxelRect(grid, occ.corner, occ.corner);
-    const glm::dvec2 k{occ.toward.x < 0 ? c.x0 : c.x1, occ.toward.y < 0 ? c.y0 : c.y1};
-    const bool in_quadrant = (apex.x - k.x) * occ.toward.x >= 0.0 &&
-                             (apex.y - k.y) * occ.toward.y >= 0.0 &&
+    const Rect c = voxelRect(grid, l.corner, l.corner);
+    const glm::dvec2 k{toward.x < 0 ? c.x0 : c.x1, toward.y < 0 ? c.y0 : c.y1};
+    const bool in_quadrant = (apex.x - k.x) * toward.x >= 0.0 && (apex.y - k.y) * toward.y >= 0.0 &&
                              std::max(std::abs(apex.x - k.x), std::abs(apex.y - k.y)) > slack;
     if (in_quadrant) {
         // Both outer edges face the viewpoint: every ray between the silhouettes
         // a (end of the x leg's outer edge) and b (end of the y leg's) crosses
         // them, so the polygon is the quadrant beyond k cut by the wedge.
-        const glm::dvec2 a{occ.toward.x < 0 ? leg_x.x1 : leg_x.x0, k.y};
-        const glm::dvec2 b{k.x, occ.toward.y < 0 ? leg_y.y1 : leg_y.y0};
-        RgvcOcclusionPolygon& poly = out[0];
+        const glm::dvec2 a{toward.x < 0 ? leg_x.x1 : leg_x.x0, k.y};
+        const glm::dvec2 b{k.x, toward.y < 0 ? leg_y.y1 : leg_y.y0};
+        RgvcOcclusionPolygon& poly = out[size_t(n)];
         poly = RgvcOcclusionPolygon{};
         poly.apex = apex;
         if (wedgePlanes(apex, a, b, poly)) {
-            poly.planes[size_t(poly.plane_count++)] = unitPlane(-occ.toward.x, 0.0, k);
-            poly.planes[size_t(poly.plane_count++)] = unitPlane(0.0, -occ.toward.y, k);
+            poly.planes[size_t(poly.plane_count++)] = unitPlane(-toward.x, 0.0, k);
+            poly.planes[size_t(poly.plane_count++)] = unitPlane(0.0, -toward.y, k);
             poly.outline = {a, k, b};
             poly.outline_count = 3;
-            return 1;
+            return n + 1;
         }
     }
-    int n = 0;
     if (rectShadow(leg_x, apex, slack, out[size_t(n)])) ++n;
     if (rectShadow(leg_y, apex, slack, out[size_t(n)])) ++n;
+    return n;
+}
+
+}  // namespace
+
+int occlusionPolygons(const RgvcExtendedOccluder& occ, const RegularGrid& grid, glm::dvec2 apex,
+                      RgvcOcclusionPolygons& out) {
+    // A staircase's hidden region is the union of its Ls' (the header says why
+    // their overlapping polygons are kept rather than a partition).
+    int n = 0;
+    for (int i = 0; i < occ.part_count; ++i)
+        n = lShadows(occ.parts[size_t(i)], occ.toward, grid, apex, out, n);
     return n;
 }
 

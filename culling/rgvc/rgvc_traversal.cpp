@@ -207,10 +207,10 @@ void RgvcCuller::visitVoxel(const Scene& scene, int x, int y, int64_t k) {
 }
 
 void RgvcCuller::occludeFrom(int x, int y, int64_t k) {
-    const RgvcExtendedOccluder occ =
-        extendOccluder({x, y}, viewer_, grid_.resolution.x, grid_.resolution.y,
-                       [&](int a, int b) { return occluder_.get(a, b) || occlusion_.get(a, b); });
-    std::array<RgvcOcclusionPolygon, 2> polygons;
+    const RgvcExtendedOccluder occ = extendOccluder(
+        {x, y}, viewer_, grid_.resolution.x, grid_.resolution.y, RgvcExtension(options_.extension),
+        [&](int a, int b) { return occluder_.get(a, b) || occlusion_.get(a, b); });
+    RgvcOcclusionPolygons polygons;
     const int count = occlusionPolygons(occ, grid_, wedge_.apex(), polygons);
     int64_t marked = 0;
     for (int i = 0; i < count; ++i)

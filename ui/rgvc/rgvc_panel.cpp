@@ -127,7 +127,7 @@ bool occluderPicker(const RgvcSnapshot& rgvc, RgvcViewState& view) {
                     o.occluder.initial.y, (long long)o.layer, o.polygon_count);
         ImGui::Text("steps %d %d %d %d, legs x %d y %d, marked %lld", o.occluder.steps[0].count,
                     o.occluder.steps[1].count, o.occluder.steps[2].count, o.occluder.steps[3].count,
-                    o.occluder.leg_x, o.occluder.leg_y, (long long)o.voxels_occluded);
+                    o.occluder.parts[0].leg_x, o.occluder.parts[0].leg_y, (long long)o.voxels_occluded);
     }
     return changed;
 }

@@ -3,7 +3,8 @@
 // The PVS / exact ratio is printed, not asserted: over-estimation is the price of
 // conservative grids (coarse grids, the superset frustum, TBVs).
 //
-// RgvcDifferential.*: 100 scenes x 20 frames with variations of the options.
+// RgvcDifferential.*: 100 scenes x 20 frames with variations of the options
+// (each variation with both occluder extensions, --rgvc-extension 0 and 1).
 // RgvcSweep.Full: the full sweep, 1000 scenes x 20 frames, part of the default
 // run (a few seconds). A longer sweep:
 //   GRIDCULL_SWEEP_SCENES=10000 build/tests/core_tests --gtest_filter='RgvcSweep.*' On failure the
@@ -102,26 +103,52 @@ TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
     }
 }
 
+// Both occluder extensions (--rgvc-extension: the convex L, the staircase) on
+// the default run's scenes.
+TEST(RgvcDifferential, BothOccluderExtensionsStayConservative) {
+    constexpr int kScenes = 100;
+    for (const int extension : {0, 1}) {
+        RgvcOptions options;
+        options.extension = extension;
+        SCOPED_TRACE("extension " + std::to_string(extension));
+        SweepTotals totals;
+        const std::vector<uint64_t> seeds = test::seedsToRun(1000, kScenes);
+        for (const uint64_t seed : seeds)
+            test::withSeed(seed, [&] { runScene(seed, options, totals); });
+        report(extension == 0 ? "extension 0 (convex L)" : "extension 1 (staircase)",
+               int(seeds.size()), totals);
+        EXPECT_EQ(totals.false_culls, 0);
+    }
+}
+
 TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
     SweepTotals totals;
-    for (const double validity : {0.05, 5.0}) {
-        RgvcOptions options;
-        options.validity_s = validity;
-        SCOPED_TRACE("validity " + std::to_string(validity));
-        for (const uint64_t seed : test::seedsToRun(5000, 20))
-            test::withSeed(seed, [&] { runScene(seed, options, totals); });
+    for (const int extension : {0, 1}) {
+        for (const double validity : {0.05, 5.0}) {
+            RgvcOptions options;
+            options.validity_s = validity;
+            options.extension = extension;
+            SCOPED_TRACE("validity " + std::to_string(validity) + " extension " +
+                         std::to_string(extension));
+            for (const uint64_t seed : test::seedsToRun(5000, 20))
+                test::withSeed(seed, [&] { runScene(seed, options, totals); });
+        }
     }
     EXPECT_EQ(totals.false_culls, 0);
 }
 
 TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
     SweepTotals totals;
-    for (const int resolution : {3, 97}) {
-        RgvcOptions options;
-        options.grid_resolution = resolution;
-        SCOPED_TRACE("resolution " + std::to_string(resolution));
-        for (const uint64_t seed : test::seedsToRun(7000, 10))
-            test::withSeed(seed, [&] { runScene(seed, options, totals); });
+    for (const int extension : {0, 1}) {
+        for (const int resolution : {3, 97}) {
+            RgvcOptions options;
+            options.grid_resolution = resolution;
+            options.extension = extension;
+            SCOPED_TRACE("resolution " + std::to_string(resolution) + " extension " +
+                         std::to_string(extension));
+            for (const uint64_t seed : test::seedsToRun(7000, 10))
+                test::withSeed(seed, [&] { runScene(seed, options, totals); });
+        }
     }
     EXPECT_EQ(totals.false_culls, 0);
 }
