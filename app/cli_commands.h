@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli_options.h"
+#include "app/window.h"
 
 namespace gridcull {
 
@@ -31,7 +32,7 @@ int runBench(const BenchCommand& c);
 
 // `shot` and `view` share the window's options.
 struct WindowCommand {
-    std::string scene, algo = "vfc", out, view = "main";
+    std::string scene, algo = kDefaultAlgorithm, out, view = "main";
     long long frame = 0, width = 1280, height = 720, exit_after = 0;
     bool play = false;
     KnobOptions knobs;

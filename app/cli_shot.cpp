@@ -15,7 +15,12 @@ namespace {
 void addWindowOptions(CLI::App& cmd, WindowCommand& c) {
     cmd.add_option("SCENE", c.scene, "the scene file")->required()->type_name("");
     cmd.add_option("--algo", c.algo,
-                   "the algorithm whose PVS colours the objects (default vfc; listed below)")
+                   std::string("the algorithm whose PVS colours the objects, listed below; "
+                               "default ") +
+                       kDefaultAlgorithm +
+                       ", which `gridcull` alone opens with, for view and shot alike so that a "
+                       "shot pictures what the window shows (--algo vfc: a picture no occlusion "
+                       "culler's changes move)")
         ->type_name("A");
     cmd.add_option("--width", c.width, "window width in pixels, 64 to 8192 (default 1280)")
         ->check(CLI::Range(64LL, 8192LL).description(""))

@@ -15,8 +15,6 @@ namespace {
 
 // Frames played per call at most; beyond that playback runs slower than real time.
 constexpr int kMaxFramesPerAdvance = 4;
-// What the window falls back to when a scene does not fit the selected culler.
-constexpr const char* kFallbackAlgorithm = "vfc";
 
 int indexOfName(const std::vector<std::string>& names, const std::string& name) {
     const auto found = std::find(names.begin(), names.end(), name);
@@ -70,6 +68,7 @@ FamilyViewContext Debugger::familyContext() const {
     context.knobs = &session_.knobs();
     context.view_mode = view_mode_;
     context.hovered_object = hovered_index_;
+    context.states = &session_.states();
     return context;
 }
 
@@ -183,8 +182,10 @@ void Debugger::openSceneFile(const std::string& path) {
     std::string algo = session_.algo(), why, error;
     std::string note;
     if (!algorithmFits(algo, *loaded.scene, why)) {
-        note = why + "; switched to " + kFallbackAlgorithm;
-        algo = kFallbackAlgorithm;
+        std::string unused;
+        algo = algorithmFits(kDefaultAlgorithm, *loaded.scene, unused) ? kDefaultAlgorithm
+                                                                       : kLastResortAlgorithm;
+        note = why + "; switched to " + algo;
     }
     if (!session_.open(std::move(*loaded.scene), path, algo, error)) {
         scene_errors_ = {error};

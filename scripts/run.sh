@@ -19,8 +19,8 @@ scene=scenes/default.json
 frame=40
 echo "no display: rendering frame $frame of $scene headless"
 LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x720x24" \
-  "$exe" shot "$scene" --frame "$frame" --algo vfc --out "$out/window.png"
-"$exe" bench "$scene" --algo all,vfc,exact --frames 20 --runs 1 > "$out/report.txt"
+  "$exe" shot "$scene" --frame "$frame" --algo rgvc --out "$out/window.png"
+"$exe" bench "$scene" --algo all,vfc,rgvc,exact --frames 20 --runs 1 > "$out/report.txt"
 echo "screenshot: $PWD/$out/window.png"
 echo "cull report: $PWD/$out/report.txt"
 cat "$out/report.txt"

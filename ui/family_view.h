@@ -25,6 +25,7 @@
 #include "culling/scene/scene.h"
 #include "ui/debug_draw.h"
 #include "ui/image_frame.h"
+#include "ui/object_state.h"
 #include "ui/view_mode.h"
 
 namespace gridcull {
@@ -40,6 +41,9 @@ struct FamilyViewContext {
     const KnobValues* knobs = nullptr;        // the culler's knob values
     ViewMode view_mode = ViewMode::Overview;
     int hovered_object = -1;  // index into scene->objects, -1: none
+    // Each object's state this frame (visible, hidden, culled, false-culled),
+    // by object index; null when not known.
+    const std::vector<ObjectState>* states = nullptr;
 };
 
 // The pointer over the scene view this frame.

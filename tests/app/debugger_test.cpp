@@ -49,26 +49,47 @@ TEST_F(DebuggerTest, OffersOnlyTheAlgorithmsOfTheScenesDimension) {
     std::string error;
     ASSERT_TRUE(debugger.init(load("forest-3d.json"), error)) << error;
     EXPECT_TRUE(offers(debugger, "lazy-grid"));
-    EXPECT_FALSE(offers(debugger, "rgvc"));
+    EXPECT_TRUE(offers(debugger, "rgvc"));  // runs on 2D and 3D scenes
     ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
     EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "lazy-grid");
     debugger.drawScene(computeLayout(640, 360, false), 360);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 
-    // A 2D scene: the lazy grid does not run there, so the window switches.
+    // A 2D scene: the lazy grid does not run there, so the window switches to
+    // the culler it opens with.
     debugger.openSceneFile(test::sourcePath("scenes/walls-2d.json"));
     EXPECT_EQ(debugger.session().scene().dimensions, 2);
-    EXPECT_EQ(debugger.session().algo(), "vfc");
+    EXPECT_EQ(debugger.session().algo(), kDefaultAlgorithm);
     EXPECT_NE(debugger.note().find("lazy-grid runs on 3D scenes only, and this scene is 2D"),
               std::string::npos)
         << debugger.note();
-    EXPECT_NE(debugger.note().find("switched to vfc"), std::string::npos) << debugger.note();
+    EXPECT_NE(debugger.note().find(std::string("switched to ") + kDefaultAlgorithm),
+              std::string::npos)
+        << debugger.note();
     EXPECT_TRUE(offers(debugger, "rgvc"));
     EXPECT_FALSE(offers(debugger, "lazy-grid"));
 
-    // Picking rgvc from the list brings its view and snapshot, and clears the note.
+    // Picking a culler from the list clears the note; picking rgvc brings its
+    // view and snapshot.
+    select(debugger, "vfc");
+    EXPECT_TRUE(debugger.note().empty());
+    EXPECT_EQ(debugger.session().debugSnapshot(), nullptr);
     select(debugger, "rgvc");
     EXPECT_TRUE(debugger.note().empty());
+    ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
+    EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "rgvc");
+    debugger.drawScene(computeLayout(640, 360, false), 360);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// `gridcull` alone opens the built-in default scene with regular-grid
+// culling, its panel and overlay (the 3D voxel boxes) drawn.
+TEST_F(DebuggerTest, TheDefaultSceneOpensWithRgvc) {
+    EXPECT_EQ(ViewOptions{}.algo, "rgvc");
+    Debugger debugger(options_);
+    std::string error;
+    ASSERT_TRUE(debugger.init(defaultScene(), error)) << error;
+    EXPECT_EQ(debugger.session().algo(), "rgvc");
     ASSERT_NE(debugger.session().debugSnapshot(), nullptr);
     EXPECT_STREQ(debugger.session().debugSnapshot()->kind().family, "rgvc");
     debugger.drawScene(computeLayout(640, 360, false), 360);
@@ -78,7 +99,8 @@ TEST_F(DebuggerTest, OffersOnlyTheAlgorithmsOfTheScenesDimension) {
 void select(Debugger& debugger, const std::string& name) {
     UiActions actions;
     const std::vector<std::string>& names = debugger.offeredAlgorithms();
-    actions.algorithm.select_algo = int(std::find(names.begin(), names.end(), name) - names.begin());
+    actions.algorithm.select_algo =
+        int(std::find(names.begin(), names.end(), name) - names.begin());
     debugger.apply(actions);
     ASSERT_EQ(debugger.session().algo(), name);
 }
@@ -121,11 +143,11 @@ TEST_F(DebuggerTest, RefusesAnAlgorithmThatDoesNotRunOnTheScene) {
 // The command line refuses the same combinations before any window opens.
 TEST(WindowCommands, RefuseAnAlgorithmOfTheOtherDimensionNamingIt) {
     const std::string flat = "'" + test::sourcePath("scenes/walls-2d.json") + "'";
-    const std::string deep = "'" + test::sourcePath("scenes/forest-3d.json") + "'";
     for (const std::string& args :
          {"shot " + flat + " --frame 0 --algo lazy-grid --out '" + test::scratchDir() + "/n.png'",
           "view " + flat + " --algo lazy-grid", "cull " + flat + " --algo busy-grid",
-          "bench " + flat + " --algo vfc,lazy-grid-z", "view " + deep + " --algo rgvc"}) {
+          "bench " + flat + " --algo vfc,lazy-grid-z",
+          "view " + flat + " --algo busy-grid-tight"}) {
         const test::CommandResult r = test::runGridcull(args);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
         EXPECT_NE(r.err.find(" scenes only, and this scene is "), std::string::npos) << r.err;

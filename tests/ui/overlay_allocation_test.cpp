@@ -68,6 +68,18 @@ TEST(OverlayAllocation, RedrawingTheRgvcOverlayAllocatesNothing) {
     EXPECT_EQ(allocationsOfRedraws("figure1-2d.json", "rgvc", 60, flags, false), 0);
 }
 
+// 3D: the voxel boxes with a layer stepped to and a picked occluder's cap, and
+// a slice.
+TEST(OverlayAllocation, RedrawingTheRgvcOverlayIn3dAllocatesNothing) {
+    KnobValues flags;
+    flags.set("rgvc-layer", 12);
+    flags.set("rgvc-occluder", 0);
+    EXPECT_EQ(allocationsOfRedraws("hidden-movers-3d.json", "rgvc", 60, flags, false), 0);
+    flags.set("rgvc-slice", 10);
+    flags.set("rgvc-slice-axis", 2);
+    EXPECT_EQ(allocationsOfRedraws("hidden-movers-3d.json", "rgvc", 60, flags, false), 0);
+}
+
 TEST(OverlayAllocation, RedrawingTheLazyGridOverlayAllocatesNothing) {
     KnobValues flags;
     flags.set("lazy-object", 2300);  // a crown culled after pixel queries

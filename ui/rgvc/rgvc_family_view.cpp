@@ -1,10 +1,14 @@
 #include "ui/rgvc/rgvc_family_view.h"
 
+#include <limits>
 #include <vector>
 
 #include "culling/rgvc/rgvc_snapshot.h"
+#include "ui/rgvc/rgvc_object_voxels.h"
 #include "ui/rgvc/rgvc_overlay.h"
+#include "ui/rgvc/rgvc_overlay3d.h"
 #include "ui/rgvc/rgvc_panel.h"
+#include "ui/rgvc/rgvc_pick3d.h"
 
 namespace gridcull {
 
@@ -12,8 +16,11 @@ namespace {
 
 // The view state the command line can set.
 struct RgvcViewFlags {
-    int layer = -1;     // chess layer shown up to; -1: every layer
-    int occluder = -1;  // picked extended occluder; -1: none
+    int layer = -1;      // chess layer shown up to; -1: every layer
+    int occluder = -1;   // picked occluder; -1: none
+    int slice = -1;      // 3D: the slice shown instead of boxes; -1: boxes
+    int slice_axis = 1;  // 3D: 0 x, 1 y, 2 z
+    int object = -1;     // the object (scene id) whose voxels the panel lists; -1: none
 };
 
 constexpr int kMaxFlagValue = 100000000;
@@ -22,50 +29,130 @@ const KnobTable<RgvcViewFlags>& rgvcViewFlags() {
     static const KnobTable<RgvcViewFlags> table{
         derivedKnob("rgvc-layer", &RgvcViewFlags::layer, 0, kMaxFlagValue, "all", "every layer",
                     "show the traversal up to chess layer N, that layer and its seed "
-                    "highlighted"),
+                    "highlighted, and O, H, I and T as they stood after it"),
         derivedKnob("rgvc-occluder", &RgvcViewFlags::occluder, 0, kMaxFlagValue, "none", "none",
-                    "pick extended occluder N (0-based, in the order the traversal found "
-                    "them): its extension steps and occlusion polygon"),
+                    "pick occluder N (0-based, in the order the traversal found them): 2D, "
+                    "the extended occluder's steps and occlusion polygon; 3D, the voxel's "
+                    "layer cap, its extrusion and the direction-map cells its pass covered"),
+        derivedKnob("rgvc-slice", &RgvcViewFlags::slice, 0, kMaxFlagValue, "none", "voxel boxes",
+                    "3D: show the plane of voxels with index N along --rgvc-slice-axis "
+                    "(clamped to the grid) instead of the voxel boxes"),
+        knob("rgvc-slice-axis", &RgvcViewFlags::slice_axis, 0, 2,
+             "3D: the axis the slice is cut across: 0 x, 1 y, 2 z"),
+        derivedKnob("rgvc-object", &RgvcViewFlags::object, 0, std::numeric_limits<int>::max(),
+                    "none", "none",
+                    "pick the object with scene id N, as a click in the window does: the "
+                    "panel lists its voxels in I and what the traversal found in each"),
     };
     return table;
 }
 
 class RgvcFamilyView final : public FamilyView {
 public:
-    bool applyFlags(const KnobValues& flags, const Scene&, std::string&) override {
+    bool applyFlags(const KnobValues& flags, const Scene& scene, std::string& error) override {
+        followDimensions(scene.dimensions);
         const RgvcViewFlags f = rgvcViewFlags().read(flags);
         view_.layer = f.layer;
         view_.occluder = f.occluder;
-        return true;
+        view_.slice_axis = f.slice_axis;
+        if (f.slice >= 0) {
+            view_.mode = RgvcVoxelMode::Slice;
+            view_.slice_index = f.slice;
+        }
+        if (f.object < 0) return true;
+        pinned_object_ = scene.indexOf(f.object);
+        if (pinned_object_ >= 0) return true;
+        error =
+            "--rgvc-object " + std::to_string(f.object) + ": the scene has no object with that id";
+        return false;
     }
 
-    void sceneChanged() override { voxel_hovered_ = false; }
+    void sceneChanged() override {
+        hovering_ = false;
+        has_pinned_voxel_ = false;
+        pinned_object_ = -1;
+    }
 
     void pointer(const FamilyViewContext& context, const ViewPointer& pointer) override {
-        voxel_hovered_ = pointer.over_view && context.scene->dimensions == 2;
-        if (!voxel_hovered_) return;
-        // The culler's grid (--rgvc-grid-res may differ from the scene's), which
-        // the overlay draws and the voxel description reads.
+        followDimensions(context.scene->dimensions);
+        hovering_ = false;
+        if (!pointer.over_view) return;  // the pinned voxel stays in the panel
         const RgvcSnapshot* rgvc = snapshotOf(context);
-        const glm::ivec3 voxel = (rgvc ? rgvc->grid : context.scene->grid).voxelOf(pointer.origin);
-        hovered_voxel_ = {voxel.x, voxel.y};
-        if (pointer.clicked && rgvc) view_.occluder = rgvcOccluderAt(*rgvc, hovered_voxel_);
+        if (context.scene->dimensions == 2) {
+            // The culler's grid (--rgvc-grid-res may differ from the scene's),
+            // which the overlay draws and the voxel description reads.
+            const glm::ivec3 v = (rgvc ? rgvc->grid : context.scene->grid).voxelOf(pointer.origin);
+            hovered_voxel_ = {v.x, v.y, 0};
+            hovering_ = true;
+            if (pointer.clicked && rgvc) view_.occluder = rgvcOccluderAt(*rgvc, {v.x, v.y});
+        } else if (rgvc && rgvc->dimensions == 3) {
+            scratch3d_.index.update(*rgvc, rgvcShownLayer(*rgvc, view_.layer));
+            hovering_ = pickRgvcVoxel3d(*rgvc, view_, scratch3d_.index, scratch3d_.index.layer(),
+                                        pointer.origin, pointer.direction, hovered_voxel_);
+            if (pointer.clicked)
+                view_.occluder = hovering_ ? rgvcOccluder3dAt(*rgvc, hovered_voxel_) : -1;
+        }
+        if (pointer.clicked && rgvc) {
+            has_pinned_voxel_ = hovering_;
+            pinned_voxel_ = hovered_voxel_;
+            pinned_object_ = context.hovered_object;
+        }
+    }
+
+    int focusedObject(const FamilyViewContext& context) const override {
+        // A picked object is outlined as if it were under the pointer.
+        if (!snapshotOf(context)) return context.hovered_object;
+        return context.hovered_object >= 0 ? context.hovered_object : pinned_object_;
     }
 
     void drawPanel(const FamilyViewContext& context, FamilyAction&) override {
+        followDimensions(context.scene->dimensions);
         const RgvcSnapshot* rgvc = snapshotOf(context);
         if (!rgvc) return;
-        if (voxel_hovered_) describeRgvcVoxel(*rgvc, *context.scene, hovered_voxel_, voxel_);
-        drawRgvcPanel(*rgvc, view_, voxel_hovered_ ? &voxel_ : nullptr);
+        RgvcPanelInput input;
+        const glm::ivec3* voxel = hovering_           ? &hovered_voxel_
+                                  : has_pinned_voxel_ ? &pinned_voxel_
+                                                      : nullptr;
+        if (voxel) {
+            describeRgvcVoxel(*rgvc, *context.scene, *voxel, voxel_);
+            input.voxel = &voxel_;
+            input.voxel_hovered = hovering_;
+        }
+        const int object = context.hovered_object >= 0 ? context.hovered_object : pinned_object_;
+        scratch3d_.index.update(*rgvc, rgvcShownLayer(*rgvc, view_.layer));
+        describeRgvcObject(*rgvc, *context.scene, scratch3d_.index, object, object_);
+        input.object = &object_;
+        if (context.states && object >= 0 && size_t(object) < context.states->size())
+            input.object_state = (*context.states)[size_t(object)];
+        if (rgvc->dimensions == 3 && view_.occluder >= 0) {
+            buildRgvcCap3d(*rgvc, context.scene->camera.near, view_.occluder, scratch3d_.cap);
+            input.cap = &scratch3d_.cap;
+        }
+        drawRgvcPanel(*rgvc, view_, input);
     }
 
-    void drawOverlay(const FamilyViewContext& context, const OverlayView&,
+    void drawOverlay(const FamilyViewContext& context, const OverlayView& overlay,
                      DebugDraw& draw) override {
+        followDimensions(context.scene->dimensions);
         const RgvcSnapshot* rgvc = snapshotOf(context);
-        if (rgvc && context.scene->dimensions == 2) drawRgvcOverlay(*rgvc, view_, draw, scratch_);
+        if (!rgvc) return;
+        if (rgvc->dimensions == 2 && context.scene->dimensions == 2) {
+            drawRgvcOverlay(*rgvc, view_, draw, scratch_);
+        } else if (rgvc->dimensions == 3) {
+            const glm::dvec3 eye = rgvcViewEye(overlay.view_projection, rgvc->grid);
+            drawRgvcOverlay3d(*rgvc, view_, context.scene->camera.near, eye, draw, scratch3d_);
+        }
     }
 
 private:
+    // The toggles start as rgvcDefaultToggles has them for the scene's
+    // dimension, and again when a scene of the other dimension opens.
+    void followDimensions(int dimensions) {
+        if (dimensions == toggles_for_) return;
+        rgvcDefaultToggles(view_, dimensions);
+        toggles_for_ = dimensions;
+    }
+
     static const RgvcSnapshot* snapshotOf(const FamilyViewContext& context) {
         const RgvcSnapshot* rgvc =
             context.snapshot ? context.snapshot->as<RgvcSnapshot>() : nullptr;
@@ -73,10 +160,16 @@ private:
     }
 
     RgvcViewState view_;
-    bool voxel_hovered_ = false;
-    glm::ivec2 hovered_voxel_{0};
+    int toggles_for_ = 0;    // the dimension view_'s toggles are set for
+    bool hovering_ = false;  // a voxel is under the pointer
+    glm::ivec3 hovered_voxel_{0};
+    bool has_pinned_voxel_ = false;  // the voxel clicked last, shown when none is hovered
+    glm::ivec3 pinned_voxel_{0};
+    int pinned_object_ = -1;  // object index clicked or named by --rgvc-object
     RgvcVoxelInfo voxel_;
+    RgvcObjectVoxels object_;
     std::vector<uint8_t> scratch_;
+    RgvcOverlay3dScratch scratch3d_;
 };
 
 }  // namespace

@@ -1,7 +1,10 @@
 // Regular-grid culling in the window (the ui registry's entry for the "rgvc"
-// family): the rgvc panel, the matrices and traversal over the 2D view, the voxel
-// under the pointer, a click that picks the extended occluder there, and the view
-// flags --rgvc-layer and --rgvc-occluder.
+// family), 2D and 3D: the rgvc panel, the matrices and traversal over the view
+// (2D: ui/rgvc/rgvc_overlay.h; 3D: ui/rgvc/rgvc_overlay3d.h), the voxel under
+// the pointer (3D: picked along the pointer's ray, ui/rgvc/rgvc_pick3d.h), a
+// click that picks the occluder there and keeps that voxel and the object
+// under the pointer in the panel, and the view flags --rgvc-layer,
+// --rgvc-occluder, --rgvc-slice, --rgvc-slice-axis and --rgvc-object.
 #pragma once
 #include "ui/family_view.h"
 

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "ui/rgvc/rgvc_history.h"
+
 namespace gridcull {
 
 namespace {
@@ -97,11 +99,18 @@ void drawLineOfSight(const RgvcSnapshot& snap, DebugDraw& draw) {
     }
 }
 
+// The picked extended occluder (a convex L, or a staircase of two Ls): its
+// occlusion polygons, then its initial voxel and each extension step's voxels,
+// boxed and numbered 1 to 4 in the paper's order (a staircase's step 4 starts at
+// the end of step 3, not at the initial voxel).
 void drawOccluder(const RgvcSnapshot& snap, const RgvcViewState& view, const VoxelSpace& s,
                   DebugDraw& draw) {
     const RgvcOccluderView& picked = snap.occluders[size_t(view.occluder)];
     const RgvcExtendedOccluder& occ = picked.occluder;
     if (view.shown(RgvcLayer::Polygon)) {
+        // Every polygon of every L (up to four for a staircase), each convex; where
+        // they overlap (behind an L's corner voxel, behind a staircase's initial
+        // voxel) the veils add up.
         const Aabb& w = snap.grid.world;
         const double reach = 2.0 * glm::length(glm::dvec2(w.max.x - w.min.x, w.max.y - w.min.y));
         const Paint fill = rgvcLayerPaint(RgvcLayer::Polygon);
@@ -129,7 +138,8 @@ void drawOccluder(const RgvcSnapshot& snap, const RgvcViewState& view, const Vox
                    Paint{paint.swatch, 0.85f});
         outlineVoxels(draw, s, occ.initial.x - 1, occ.initial.y - 1, occ.initial.x + 2,
                       occ.initial.y + 2, paint);
-        for (const RgvcExtensionStep& step : occ.steps) {
+        for (size_t i = 0; i < occ.steps.size(); ++i) {
+            const RgvcExtensionStep& step = occ.steps[i];
             if (!step.run || step.count == 0) continue;
             // The step's voxels, and a box around them from its start.
             for (int k = 1; k <= step.count; ++k) {
@@ -141,6 +151,12 @@ void drawOccluder(const RgvcSnapshot& snap, const RgvcViewState& view, const Vox
                              b = step.from + step.direction * step.count;
             outlineVoxels(draw, s, std::min(a.x, b.x) - 1, std::min(a.y, b.y) - 1,
                           std::max(a.x, b.x) + 2, std::max(a.y, b.y) + 2, paint);
+            // Its number in the voxel beyond its last one (the label's top left
+            // near that voxel's top left).
+            constexpr const char* kStepNames[4] = {"1", "2", "3", "4"};
+            const glm::ivec2 c = b + step.direction;
+            draw.text(DrawSpace::World, {s.x(c.x + 0.25), s.y(c.y + 0.75), 0.0}, kStepNames[i],
+                      paint);
         }
     }
 }
@@ -157,23 +173,30 @@ void drawRgvcOverlay(const RgvcSnapshot& snap, const RgvcViewState& view, DebugD
     // Back to front: the traversal under the matrices, so O and H read as in the paper.
     const int64_t shown = rgvcShownLayer(snap, view.layer);
     if (shown >= 0) drawTraversal(snap, view, shown, s, draw, scratch);
+    // O, H, I and T as they stood after the shown layer (ui/rgvc/rgvc_history.h).
     if (view.shown(RgvcLayer::Occlusion) && snap.occlusion)
         fillRuns(draw, s, w, h, rgvcLayerPaint(RgvcLayer::Occlusion),
-                 [&](int x, int y) { return snap.occlusion->get(x, y); });
+                 [&](int x, int y) { return rgvcHAt(snap, x, y, 0, shown); });
     if (view.shown(RgvcLayer::Occluder))
         fillRuns(draw, s, w, h, rgvcLayerPaint(RgvcLayer::Occluder),
-                 [&](int x, int y) { return snap.occluder->get(x, y); });
-    if (view.shown(RgvcLayer::Tbv) && snap.tbvs)
+                 [&](int x, int y) { return rgvcOAt(snap, x, y, 0, shown); });
+    if (view.shown(RgvcLayer::Tbv) && snap.tbvs) {
         fillRuns(draw, s, w, h, rgvcLayerPaint(RgvcLayer::Tbv),
                  [&](int x, int y) { return !snap.tbvs->empty(x, y); });
+        // The TBVs the traversal revealed after the layer were still in T.
+        for (const RgvcRevealView& r : snap.reveals)
+            if (r.layer > shown)
+                rgvcForEachTbvVoxel(snap, r.tbv, [&](int x, int y, int) {
+                    fillVoxels(draw, s, x, y, x + 1, y + 1, rgvcLayerPaint(RgvcLayer::Tbv));
+                });
+    }
     if (view.shown(RgvcLayer::Identifiers)) {
         const Paint paint = rgvcLayerPaint(RgvcLayer::Identifiers);
         const double m = 0.5 * (1.0 - kIdMarkFraction);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
-                const bool has =
-                    (snap.identifiers_static && !snap.identifiers_static->empty(x, y)) ||
-                    (snap.identifiers_dynamic && !snap.identifiers_dynamic->empty(x, y));
+                bool has = false;
+                rgvcForEachIdAt(snap, x, y, 0, shown, [&](int32_t) { has = true; });
                 if (has) fillVoxels(draw, s, x + m, y + m, x + 1 - m, y + 1 - m, paint);
             }
     }

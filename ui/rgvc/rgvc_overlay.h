@@ -1,10 +1,11 @@
 // Draws the state of regular-grid culling (culling/rgvc/rgvc_snapshot.h) over the
-// 2D view, like Figure 1 of Batagelo & Wu: H as a light veil, O dark, T and I
-// voxels marked, the traversal up to a chess layer with that layer and its seed
-// voxel highlighted, the line of sight, and a picked extended occluder's
-// extension steps and occlusion polygons. Colours and toggles: ui/rgvc/rgvc_view.h.
-// O, H, I and T are drawn as they stand at the end of the frame (the snapshot
-// keeps no history of them): the layer stepper limits the traversal shown only.
+// 2D view (3D: ui/rgvc/rgvc_overlay3d.h), like Figure 1 of Batagelo & Wu: H as
+// a light veil, O dark, T and I voxels marked, the traversal up to a chess
+// layer with that layer and its seed voxel highlighted, the line of sight, and
+// a picked extended occluder's extension steps and occlusion polygons. Colours
+// and toggles: ui/rgvc/rgvc_view.h.
+// O, H, I and T are drawn as they stood after the shown chess layer
+// (ui/rgvc/rgvc_history.h), so stepping the layers replays the frame.
 //
 // Everything is World space, x-y at z = 0, through the DebugDraw interface
 // (ui/debug_draw.h). Bit matrices become one rectangle per run of set voxels in

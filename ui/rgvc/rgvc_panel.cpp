@@ -5,6 +5,9 @@
 
 #include <imgui.h>
 
+#include "ui/rgvc/rgvc_panel3d.h"
+#include "ui/rgvc/rgvc_voxel_panel.h"
+
 namespace gridcull {
 
 namespace {
@@ -14,62 +17,24 @@ constexpr ImGuiColorEditFlags kSwatchFlags = ImGuiColorEditFlags_NoTooltip |
                                              ImGuiColorEditFlags_AlphaPreview;
 
 // One toggle: checkbox, colour swatch (as drawn, with its opacity), name, meaning.
-bool layerToggle(RgvcLayer layer, RgvcViewState& view) {
+bool layerToggle(RgvcLayer layer, RgvcViewState& view, int dimensions) {
     ImGui::PushID(int(layer));
     bool& on = view.show[int(layer)];
     const bool changed = ImGui::Checkbox("##show", &on);
     ImGui::SameLine();
     const Rgb c = swatchColor(rgvcLayerSwatch(layer));
-    // O and H are veils: show their swatch over the world's dark fill as drawn.
-    const float alpha = std::max(rgvcLayerAlpha(layer), 0.6f);
+    // 2D: O and H are veils, shown over the world's dark fill as drawn; 3D draws opaque.
+    const float alpha = dimensions == 3 ? 1.0f : std::max(rgvcLayerAlpha(layer), 0.6f);
     ImGui::ColorButton(rgvcLayerName(layer), ImVec4(c.r, c.g, c.b, alpha), kSwatchFlags,
                        ImVec2(13, 13));
     ImGui::SameLine();
+    const char* meaning = rgvcLayerMeaning(layer, dimensions);
     if (on)
-        ImGui::Text("%-8s %s", rgvcLayerName(layer), rgvcLayerMeaning(layer));
+        ImGui::Text("%-8s %s", rgvcLayerName(layer), meaning);
     else
-        ImGui::TextDisabled("%-8s %s", rgvcLayerName(layer), rgvcLayerMeaning(layer));
+        ImGui::TextDisabled("%-8s %s", rgvcLayerName(layer), meaning);
     ImGui::PopID();
     return changed;
-}
-
-// The first ids of a list and how many there are, in a fixed buffer (drawn every frame).
-void idList(const char* name, const std::vector<int>& ids) {
-    constexpr size_t kShown = 12;
-    char text[160];
-    int used = std::snprintf(text, sizeof text, "%s ids:", name);
-    for (size_t k = 0; k < ids.size() && k < kShown && used > 0 && size_t(used) < sizeof text; ++k)
-        used += std::snprintf(text + used, sizeof text - size_t(used), " %d", ids[k]);
-    if (ids.empty())
-        std::snprintf(text + used, sizeof text - size_t(used), " -");
-    else if (ids.size() > kShown && used > 0 && size_t(used) < sizeof text)
-        std::snprintf(text + used, sizeof text - size_t(used), " ... (%zu)", ids.size());
-    ImGui::TextWrapped("%s", text);
-}
-
-void voxelInfo(const RgvcVoxelInfo* info) {
-    if (!info || !info->valid) {
-        ImGui::TextDisabled("voxel: point at the grid in the view");
-        return;
-    }
-    ImGui::Text("voxel (%d, %d)  O %d  Os %d  H %d", info->voxel.x, info->voxel.y, int(info->o),
-                int(info->os), int(info->h));
-    idList("I", info->ids_i);
-    idList("T", info->ids_t);
-    if (info->visit_order < 0)
-        ImGui::TextUnformatted("not visited by the traversal");
-    else
-        ImGui::Text("visited in layer %lld (visit %lld)%s", (long long)info->layer,
-                    (long long)info->visit_order,
-                    info->visited_occluded ? ", already occluded" : "");
-}
-
-void memoryRows(const RgvcMatrixMemory& m) {
-    const auto kib = [](size_t bytes) { return double(bytes) / 1024.0; };
-    ImGui::Text("KiB: O %.1f  Os %.1f  H %.1f  T %.1f", kib(m.occluder), kib(m.static_occluder),
-                kib(m.occlusion), kib(m.tbv));
-    ImGui::Text("     I %.1f + %.1f  scratch %.1f  = %.1f", kib(m.identifiers_static),
-                kib(m.identifiers_dynamic), kib(m.traversal), kib(m.total()));
 }
 
 bool layerStepper(const RgvcSnapshot& rgvc, RgvcViewState& view) {
@@ -106,6 +71,11 @@ bool layerStepper(const RgvcSnapshot& rgvc, RgvcViewState& view) {
     for (const RgvcVisit& v : rgvc.visits) count += v.layer <= shown ? 1 : 0;
     ImGui::Text("layers %d..%d%s, visits %lld/%zu", first, last,
                 rgvc.terminated_early ? " (early end)" : "", (long long)count, rgvc.visits.size());
+    // The per-layer history (ui/rgvc/rgvc_history.h).
+    if (view.layer >= 0)
+        ImGui::TextDisabled("O H I T as they stood after layer %d", value);
+    else
+        ImGui::TextDisabled("O H I T at the end of the frame");
     return changed;
 }
 
@@ -125,25 +95,44 @@ bool occluderPicker(const RgvcSnapshot& rgvc, RgvcViewState& view) {
         const RgvcOccluderView& o = rgvc.occluders[size_t(value)];
         ImGui::Text("of %d: initial (%d, %d), layer %lld, %d polygon(s)", n, o.occluder.initial.x,
                     o.occluder.initial.y, (long long)o.layer, o.polygon_count);
-        ImGui::Text("steps %d %d %d %d, legs x %d y %d, marked %lld", o.occluder.steps[0].count,
-                    o.occluder.steps[1].count, o.occluder.steps[2].count, o.occluder.steps[3].count,
-                    o.occluder.parts[0].leg_x, o.occluder.parts[0].leg_y, (long long)o.voxels_occluded);
+        const RgvcExtendedOccluder& occ = o.occluder;
+        // Steps 1 to 4 as voxels added; "-" for a step 3 the convex L skipped.
+        char step3[16] = "-";
+        if (occ.steps[2].run) std::snprintf(step3, sizeof step3, "%d", occ.steps[2].count);
+        const char* shape = occ.isStaircase()                         ? "staircase"
+                            : occ.variant == RgvcExtension::Staircase ? "L (staircase variant)"
+                                                                      : "convex L";
+        ImGui::Text("%s, steps %d %d %s %d, marked %lld", shape, occ.steps[0].count,
+                    occ.steps[1].count, step3, occ.steps[3].count, (long long)o.voxels_occluded);
+        // Each L: its corner and legs (a staircase has two, meeting at the initial voxel).
+        for (int i = 0; i < occ.part_count; ++i) {
+            const RgvcOccluderL& l = occ.parts[size_t(i)];
+            ImGui::Text("%s corner (%d, %d), legs x %d y %d",
+                        occ.isStaircase() ? (i == 0 ? "L of steps 1-2" : "L of steps 3-4") : "L",
+                        l.corner.x, l.corner.y, l.leg_x, l.leg_y);
+        }
     }
     return changed;
 }
 
 }  // namespace
 
-bool drawRgvcPanel(const RgvcSnapshot& rgvc, RgvcViewState& view, const RgvcVoxelInfo* voxel) {
+bool drawRgvcPanel(const RgvcSnapshot& rgvc, RgvcViewState& view, const RgvcPanelInput& input) {
     if (!rgvc.valid) return false;
     if (!ImGui::CollapsingHeader("Regular grid (rgvc)", ImGuiTreeNodeFlags_DefaultOpen))
         return false;
     bool changed = false;
-    for (int l = 0; l < kRgvcLayerCount; ++l) changed |= layerToggle(RgvcLayer(l), view);
+    for (const RgvcLayer l : kRgvcLayerOrder)
+        if (rgvcLayerApplies(l, rgvc.dimensions)) changed |= layerToggle(l, view, rgvc.dimensions);
+    if (rgvc.dimensions == 3) changed |= drawRgvcVoxelModeControls(rgvc, view);
     changed |= layerStepper(rgvc, view);
-    changed |= occluderPicker(rgvc, view);
-    memoryRows(rgvc.memory);
-    voxelInfo(voxel);
+    if (rgvc.dimensions == 3)
+        changed |= drawRgvcOccluderPicker3d(rgvc, view, input.cap);
+    else
+        changed |= occluderPicker(rgvc, view);
+    drawRgvcMemory(rgvc.memory, rgvc.dimensions);
+    changed |= drawRgvcVoxelInfo(rgvc, view, input.voxel, input.voxel_hovered);
+    changed |= drawRgvcObjectVoxels(rgvc, view, input.object, input.object_state);
     return changed;
 }
 

@@ -26,11 +26,45 @@ const char* rgvcLayerName(RgvcLayer layer) {
             return "occluder";
         case RgvcLayer::Polygon:
             return "polygon";
+        case RgvcLayer::StaticOccluder:
+            return "Os";
     }
     return "?";
 }
 
-const char* rgvcLayerMeaning(RgvcLayer layer) {
+bool rgvcLayerApplies(RgvcLayer layer, int dimensions) {
+    return layer != RgvcLayer::StaticOccluder || dimensions == 3;
+}
+
+const char* rgvcLayerMeaning(RgvcLayer layer, int dimensions) {
+    if (dimensions == 3) {
+        // The 3D overlay: voxel boxes or a slice, every fill opaque.
+        switch (layer) {
+            case RgvcLayer::Occluder:
+                return "opaque voxels";
+            case RgvcLayer::StaticOccluder:
+                return "opaque, static objects'";
+            case RgvcLayer::Occlusion:
+                return "occluded voxels";
+            case RgvcLayer::Identifiers:
+                return "object ids (slice: mark)";
+            case RgvcLayer::Tbv:
+                return "TBVs: 2 of Txy Txz Tyz";
+            case RgvcLayer::Visited:
+                return "traversed before (slice)";
+            case RgvcLayer::CurrentLayer:
+                return "the layer's voxels, shell";
+            case RgvcLayer::Seed:
+                return "its seed voxel (white box)";
+            case RgvcLayer::LineOfSight:
+                return "line of sight (dashed)";
+            case RgvcLayer::PickedOccluder:
+                return "picked voxel, its map cells";
+            case RgvcLayer::Polygon:
+                return "picked: cap, extrusion";
+        }
+        return "";
+    }
     switch (layer) {
         case RgvcLayer::Occluder:
             return "opaque voxels (dark)";
@@ -52,6 +86,8 @@ const char* rgvcLayerMeaning(RgvcLayer layer) {
             return "picked: extension steps";
         case RgvcLayer::Polygon:
             return "picked: occlusion polygon";
+        case RgvcLayer::StaticOccluder:
+            return "static opaque voxels";
     }
     return "";
 }
@@ -77,6 +113,8 @@ Swatch rgvcLayerSwatch(RgvcLayer layer) {
             return Swatch::SkyBlue;
         case RgvcLayer::Polygon:
             return Swatch::Vermillion;
+        case RgvcLayer::StaticOccluder:
+            return Swatch::Grey;
     }
     return Swatch::White;
 }
@@ -96,43 +134,6 @@ float rgvcLayerAlpha(RgvcLayer layer) {
     }
 }
 
-void describeRgvcVoxel(const RgvcSnapshot& snapshot, const Scene& scene, glm::ivec2 v,
-                       RgvcVoxelInfo& out) {
-    out.valid = false;
-    out.voxel = v;
-    out.o = out.os = out.h = false;
-    out.ids_i.clear();
-    out.ids_t.clear();
-    out.visit_order = -1;
-    out.layer = -1;
-    out.visited_occluded = false;
-    if (!snapshot.valid || !snapshot.occluder) return;
-    const glm::ivec3 res = snapshot.grid.resolution;
-    if (v.x < 0 || v.y < 0 || v.x >= res.x || v.y >= res.y) return;
-    out.valid = true;
-    out.o = snapshot.occluder->get(v.x, v.y);
-    out.os = snapshot.static_occluder && snapshot.static_occluder->get(v.x, v.y);
-    out.h = snapshot.occlusion && snapshot.occlusion->get(v.x, v.y);
-    const auto idOf = [&](int32_t index) {
-        return index >= 0 && size_t(index) < scene.objects.size() ? scene.objects[size_t(index)].id
-                                                                  : int(index);
-    };
-    for (const IdListMatrix* m : {snapshot.identifiers_static, snapshot.identifiers_dynamic})
-        if (m) m->forEach(v.x, v.y, [&](int32_t index) { out.ids_i.push_back(idOf(index)); });
-    if (snapshot.tbvs)
-        snapshot.tbvs->forEach(v.x, v.y, [&](int32_t index) { out.ids_t.push_back(idOf(index)); });
-    std::sort(out.ids_i.begin(), out.ids_i.end());
-    std::sort(out.ids_t.begin(), out.ids_t.end());
-    for (size_t k = 0; k < snapshot.visits.size(); ++k) {
-        const RgvcVisit& visit = snapshot.visits[k];
-        if (visit.voxel != v) continue;
-        out.visit_order = int64_t(k);
-        out.layer = visit.layer;
-        out.visited_occluded = visit.occluded;
-        break;
-    }
-}
-
 int rgvcOccluderAt(const RgvcSnapshot& snapshot, glm::ivec2 v) {
     const auto& list = snapshot.occluders;
     for (size_t k = 0; k < list.size(); ++k)
@@ -140,6 +141,22 @@ int rgvcOccluderAt(const RgvcSnapshot& snapshot, glm::ivec2 v) {
     for (size_t k = 0; k < list.size(); ++k)
         if (list[k].occluder.covers(v)) return int(k);
     return -1;
+}
+
+void rgvcDefaultToggles(RgvcViewState& view, int dimensions) {
+    for (bool& on : view.show) on = true;
+    view.show[int(RgvcLayer::StaticOccluder)] = false;
+    if (dimensions == 3) view.show[int(RgvcLayer::Tbv)] = false;
+}
+
+int rgvcSliceIndex(const RgvcSnapshot& snapshot, const RgvcViewState& view) {
+    const int axis = std::clamp(view.slice_axis, 0, 2);
+    const int top = snapshot.grid.resolution[axis] - 1;
+    if (view.slice_index >= 0) return std::clamp(view.slice_index, 0, top);
+    const int64_t eye = axis == 0   ? snapshot.viewer_voxel.x
+                        : axis == 1 ? snapshot.viewer_voxel.y
+                                    : snapshot.viewer_voxel_z;
+    return int(std::clamp<int64_t>(eye, 0, top));
 }
 
 int64_t rgvcShownLayer(const RgvcSnapshot& snapshot, int64_t requested) {

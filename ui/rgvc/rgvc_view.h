@@ -1,9 +1,13 @@
-// What the 2D view shows of regular-grid culling (`rgvc`, culling/rgvc/rgvc_snapshot.h)
-// and the colours it uses, shared by the rgvc panel (ui/rgvc/rgvc_panel.h), which
-// changes it, and the overlay (ui/rgvc/rgvc_overlay.h), which draws it; and the
-// description of one voxel for the panel's "voxel under the mouse".
+// What the view shows of regular-grid culling (`rgvc`, culling/rgvc/rgvc_snapshot.h)
+// in 2D and 3D and the colours it uses, shared by the rgvc panel
+// (ui/rgvc/rgvc_panel.h), which changes it, and the overlays (2D:
+// ui/rgvc/rgvc_overlay.h; 3D: ui/rgvc/rgvc_overlay3d.h), which draw it; and the
+// description of one voxel for the panel's "voxel under the mouse"
+// (ui/rgvc/rgvc_voxel_info.h).
 //
-// Colours are swatches of the one palette (ui/palette.h).
+// Colours are swatches of the one palette (ui/palette.h), one per layer; the 3D
+// overlay draws every fill opaque, so what it shows is exactly the legend's
+// swatches (the voxel boxes' frames and the slice's empty voxels are dim grey).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -13,6 +17,7 @@
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/scene/scene.h"
 #include "ui/palette.h"
+#include "ui/rgvc/rgvc_voxel_info.h"
 
 namespace gridcull {
 
@@ -27,47 +32,65 @@ enum class RgvcLayer {
     Seed,            // the chosen layer's seed voxel
     LineOfSight,     // the viewing direction, dashed
     PickedOccluder,  // the picked extended occluder (slider or click): its extension steps
-    Polygon,         // the picked occluder's occlusion polygons
+    Polygon,         // the picked occluder's occlusion polygons (3D: its layer's cap)
+    StaticOccluder,  // 3D: Os, the static objects' opaque voxels, told apart from O
 };
-constexpr int kRgvcLayerCount = 10;
+constexpr int kRgvcLayerCount = 11;
+// The panel's order: the matrices first.
+constexpr RgvcLayer kRgvcLayerOrder[kRgvcLayerCount] = {
+    RgvcLayer::Occluder,     RgvcLayer::StaticOccluder,
+    RgvcLayer::Occlusion,    RgvcLayer::Identifiers,
+    RgvcLayer::Tbv,          RgvcLayer::Visited,
+    RgvcLayer::CurrentLayer, RgvcLayer::Seed,
+    RgvcLayer::LineOfSight,  RgvcLayer::PickedOccluder,
+    RgvcLayer::Polygon};
 
+// Whether the layer exists in scenes of `dimensions` (Os is told apart in 3D only).
+bool rgvcLayerApplies(RgvcLayer layer, int dimensions);
 const char* rgvcLayerName(RgvcLayer layer);
-const char* rgvcLayerMeaning(RgvcLayer layer);
+// What the layer shows, for the legend; `dimensions` 2 or 3.
+const char* rgvcLayerMeaning(RgvcLayer layer, int dimensions = 2);
 Swatch rgvcLayerSwatch(RgvcLayer layer);
-// Opacity the overlay draws the layer's fill with (O and H are veils over the objects).
+// Opacity the 2D overlay draws the layer's fill with (O and H are veils over the
+// objects); the 3D overlay draws every fill opaque.
 float rgvcLayerAlpha(RgvcLayer layer);
 inline Paint rgvcLayerPaint(RgvcLayer layer) {
     return {rgvcLayerSwatch(layer), rgvcLayerAlpha(layer)};
 }
 
+// 3D: what the overlay draws of the matrices: voxel boxes (Figure 6 of the
+// paper) or one slice of the grid.
+enum class RgvcVoxelMode : uint8_t { Boxes, Slice };
+
 struct RgvcViewState {
-    bool show[kRgvcLayerCount] = {true, true, true, true, true, true, true, true, true, true};
+    // The toggles, as rgvcDefaultToggles sets them for 2D.
+    bool show[kRgvcLayerCount] = {true, true, true, true, true, true,
+                                  true, true, true, true, false};
     int64_t layer = -1;  // chess layer shown up to; -1: every layer (the whole traversal)
-    int occluder = -1;   // index into RgvcSnapshot::occluders; -1: none picked
+    // The picked occluder: 2D, index into RgvcSnapshot::occluders; 3D, into
+    // RgvcSnapshot::occluders3d. -1: none picked.
+    int occluder = -1;
+    // 3D.
+    RgvcVoxelMode mode = RgvcVoxelMode::Boxes;
+    int slice_axis = 1;    // 0 x, 1 y, 2 z: the slice is the plane of voxels with this index
+    int slice_index = -1;  // -1: the plane through the viewer's voxel (clamped to the grid)
 
     bool shown(RgvcLayer l) const { return show[int(l)]; }
 };
 
-// Everything the culler knows about one voxel. `ids_i` / `ids_t` are object ids
-// (Scene::objects[i].id), ascending; their capacity is reused between calls.
-struct RgvcVoxelInfo {
-    bool valid = false;  // false: outside the grid or no snapshot
-    glm::ivec2 voxel{0};
-    bool o = false, os = false, h = false;
-    std::vector<int> ids_i;
-    std::vector<int> ids_t;
-    int64_t visit_order = -1;  // index in RgvcSnapshot::visits; -1: not visited
-    int64_t layer = -1;        // chess layer of that visit
-    bool visited_occluded = false;
-};
+// The toggles a view starts with in scenes of `dimensions`: every layer but Os
+// (O then shows every opaque voxel alike); in 3D not T either, whose boxes
+// would wall in everything behind the TBVs of many hidden movers (its toggle
+// brings them, best seen in a slice).
+void rgvcDefaultToggles(RgvcViewState& view, int dimensions);
 
-// Fills `out` for voxel `v` of `snapshot`. Cost: O(visits) for the visit search
-// plus the voxel's list lengths; allocates only when the id lists outgrow `out`.
-void describeRgvcVoxel(const RgvcSnapshot& snapshot, const Scene& scene, glm::ivec2 v,
-                       RgvcVoxelInfo& out);
+// The slice's index along view.slice_axis in `snapshot`'s grid (the default and
+// out-of-range values resolved).
+int rgvcSliceIndex(const RgvcSnapshot& snapshot, const RgvcViewState& view);
 
 // The extended occluder a click on voxel `v` picks: the one that starts there,
-// else the first (in traversal order) whose L covers it; -1 when none. O(occluders).
+// else the first (in traversal order) that covers it (its L, or either L of a
+// staircase); -1 when none. O(occluders).
 int rgvcOccluderAt(const RgvcSnapshot& snapshot, glm::ivec2 v);
 
 // The layer the view shows as current: `requested` clamped to the snapshot's

@@ -165,6 +165,81 @@ TEST_F(RgvcViewTest, PickedOccluderDrawsItsStepsAndPolygon) {
     EXPECT_TRUE(fillOf(view).empty());
 }
 
+// With --rgvc-extension 1 a staircase occluder (two Ls) draws all its steps,
+// step 3 included, numbered in the paper's order, and every one of its
+// polygons (up to four) as a convex fan out from the outline.
+TEST_F(RgvcViewTest, PickedStaircaseDrawsItsFourStepsAndEveryPolygon) {
+    SceneLoadResult loaded =
+        loadSceneFile(std::string(GRIDCULL_SOURCE_DIR) + "/scenes/figure1-2d.json");
+    ASSERT_TRUE(loaded.scene);
+    KnobValues knobs;
+    knobs.set("rgvc-extension", 1);
+    DebuggerSession session{knobs};
+    std::string error;
+    ASSERT_TRUE(session.open(std::move(*loaded.scene), "", "rgvc", error)) << error;
+    // The first frame with a staircase that has more than two polygons, else any staircase.
+    int index = -1;
+    for (int frame = 0; frame < session.scene().frames && index < 0; frame += 5) {
+        session.seek(frame);
+        snap_ = session.debugSnapshot()->as<RgvcSnapshot>();
+        ASSERT_NE(snap_, nullptr);
+        for (size_t k = 0; k < snap_->occluders.size(); ++k) {
+            const RgvcOccluderView& o = snap_->occluders[k];
+            if (!o.occluder.isStaircase()) continue;
+            if (index < 0 || o.polygon_count > 2) index = int(k);
+            if (o.polygon_count > 2) break;
+        }
+    }
+    ASSERT_GE(index, 0) << "no staircase occluder in figure1-2d";
+    const RgvcOccluderView& picked = snap_->occluders[size_t(index)];
+    const RgvcExtendedOccluder& occ = picked.occluder;
+    ASSERT_TRUE(occ.steps[2].run && occ.steps[2].count > 0);
+    ASSERT_GT(picked.polygon_count, 2);  // more than an L's
+
+    // The steps: the initial voxel and every step's voxels, each once, are the
+    // staircase's voxels; each step that added voxels is numbered.
+    RgvcViewState view = only(RgvcLayer::PickedOccluder);
+    view.occluder = index;
+    EXPECT_NEAR(area(fillOf(view)), double(occ.voxelCount()) * voxelArea(), 1e-3);
+    std::string labels;
+    for (const DebugDrawBatch::Label& label : batch_.layer(DrawSpace::World).labels)
+        labels += batch_.labelText(label);
+    std::string expected;
+    for (size_t i = 0; i < occ.steps.size(); ++i)
+        if (occ.steps[i].run && occ.steps[i].count > 0) expected += char('1' + i);
+    EXPECT_EQ(labels, expected);
+    EXPECT_NE(labels.find('3'), std::string::npos);
+    // A click on a voxel of the second L (the end of step 4, or of step 3) picks
+    // an occluder that covers it.
+    const RgvcExtensionStep& last = occ.steps[occ.steps[3].count > 0 ? 3 : 2];
+    const glm::ivec2 far_voxel = last.from + last.direction * last.count;
+    const int clicked = rgvcOccluderAt(*snap_, far_voxel);
+    ASSERT_GE(clicked, 0);
+    EXPECT_TRUE(snap_->occluders[size_t(clicked)].occluder.covers(far_voxel));
+
+    // The polygons: one fan per polygon, (outline + 2) corners, so outline
+    // triangles each, and every fan's corners are the polygon's outline.
+    view = only(RgvcLayer::Polygon);
+    view.occluder = index;
+    const std::vector<DebugDrawBatch::Vertex>& fill = fillOf(view);
+    size_t triangles = 0;
+    for (int p = 0; p < picked.polygon_count; ++p)
+        triangles += size_t(picked.polygons[size_t(p)].outline_count);
+    ASSERT_EQ(fill.size(), 3 * triangles);
+    size_t at = 0;
+    for (int p = 0; p < picked.polygon_count; ++p) {
+        const RgvcOcclusionPolygon& poly = picked.polygons[size_t(p)];
+        // The fan from the far end of the first silhouette ray: triangle k's
+        // second corner is outline point k.
+        for (int k = 0; k < poly.outline_count; ++k) {
+            const glm::vec3 drawn = fill[at + 3 * size_t(k) + 1].position;
+            EXPECT_NEAR(drawn.x, poly.outline[size_t(k)].x, 1e-3);
+            EXPECT_NEAR(drawn.y, poly.outline[size_t(k)].y, 1e-3);
+        }
+        at += 3 * size_t(poly.outline_count);
+    }
+}
+
 // The whole panel column headless (no GL) with the rgvc family's view from the
 // ui registry, its flags set and a voxel hovered: it draws, and without input
 // asks for nothing.

@@ -1,0 +1,95 @@
+#include "ui/rgvc/rgvc_panel3d.h"
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "ui/rgvc/rgvc_slice.h"
+#include "ui/rgvc/rgvc_voxel_boxes.h"
+
+namespace gridcull {
+
+namespace {
+
+constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+constexpr const char* kFaceSigns[2] = {"-", "+"};
+
+// A legend row without a toggle: a swatch and what it marks.
+void swatchRow(Swatch swatch, const char* meaning) {
+    const Rgb c = swatchColor(swatch);
+    ImGui::ColorButton(meaning, ImVec4(c.r, c.g, c.b, 1.0f),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                       ImVec2(13, 13));
+    ImGui::SameLine();
+    ImGui::TextUnformatted(meaning);
+}
+
+}  // namespace
+
+bool drawRgvcVoxelModeControls(const RgvcSnapshot& s, RgvcViewState& view) {
+    bool changed = false;
+    ImGui::TextUnformatted("show:");
+    ImGui::SameLine();
+    int mode = int(view.mode);
+    changed |= ImGui::RadioButton("boxes", &mode, int(RgvcVoxelMode::Boxes));
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("slice", &mode, int(RgvcVoxelMode::Slice));
+    view.mode = RgvcVoxelMode(mode);
+    if (view.mode != RgvcVoxelMode::Slice) {
+        swatchRow(RgvcVoxelBoxes::kFrameSwatch, "box edges");
+        return changed;
+    }
+    ImGui::SameLine();
+    for (int a = 0; a < 3; ++a) {
+        ImGui::SameLine();
+        ImGui::PushID(a);
+        int axis = view.slice_axis;
+        if (ImGui::RadioButton(kAxisNames[a], &axis, a)) {
+            view.slice_axis = axis;
+            view.slice_index = -1;  // through the viewer again
+            changed = true;
+        }
+        ImGui::PopID();
+    }
+    const int axis = std::clamp(view.slice_axis, 0, 2);
+    int index = rgvcSliceIndex(s, view);
+    swatchRow(kRgvcSliceBackdrop, "slice voxels no shown layer holds");
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderInt("##slice", &index, 0, s.grid.resolution[axis] - 1,
+                         axis == 0   ? "slice x = %d"
+                         : axis == 1 ? "slice y = %d"
+                                     : "slice z = %d")) {
+        view.slice_index = index;
+        changed = true;
+    }
+    return changed;
+}
+
+bool drawRgvcOccluderPicker3d(const RgvcSnapshot& s, RgvcViewState& view, const RgvcCap3d* cap) {
+    const int n = int(s.occluders3d.size());
+    if (n == 0) {
+        ImGui::TextDisabled("no occluders this frame");
+        return false;
+    }
+    int value = std::clamp(view.occluder, -1, n - 1);
+    ImGui::SetNextItemWidth(-1.0f);
+    const bool changed =
+        ImGui::SliderInt("##occluder3d", &value, -1, n - 1,
+                         value < 0 ? "occluder: none (or click one)" : "occluder %d");
+    if (changed) view.occluder = value;
+    if (value < 0) return changed;
+    const RgvcOccluder3d& o = s.occluders3d[size_t(value)];
+    ImGui::Text("of %d: voxel (%d, %d, %d), layer %d", n, o.voxel.x, o.voxel.y, o.voxel.z,
+                int(o.layer));
+    ImGui::Text("its pass covered %lld direction-map cells", (long long)o.cells_covered);
+    if (cap && cap->valid && cap->occluder == value) {
+        int outer = 0;
+        for (const BitmapLoop& loop : cap->vectorizer.loops()) outer += loop.hole ? 0 : 1;
+        ImGui::Text("cap on %s%s: %lld voxels, %d polygon(s), %d hole(s)",
+                    kFaceSigns[cap->sign > 0 ? 1 : 0], kAxisNames[cap->axis],
+                    (long long)cap->blocking, outer, cap->holes);
+    }
+    return changed;
+}
+
+}  // namespace gridcull
