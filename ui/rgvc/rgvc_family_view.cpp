@@ -21,6 +21,7 @@ struct RgvcViewFlags {
     int slice = -1;      // 3D: the slice shown instead of boxes; -1: boxes
     int slice_axis = 1;  // 3D: 0 x, 1 y, 2 z
     int object = -1;     // the object (scene id) whose voxels the panel lists; -1: none
+    int tbv = -1;        // 1 shows T, 0 hides it; -1: the window's default (2D on, 3D off)
 };
 
 constexpr int kMaxFlagValue = 100000000;
@@ -43,6 +44,9 @@ const KnobTable<RgvcViewFlags>& rgvcViewFlags() {
                     "none", "none",
                     "pick the object with scene id N, as a click in the window does: the "
                     "panel lists its voxels in I and what the traversal found in each"),
+        derivedKnob("rgvc-tbv", &RgvcViewFlags::tbv, 0, 1, "default", "shown in 2D, hidden in 3D",
+                    "1 shows the TBV matrix T (3D: a voxel where 2 of Txy, Txz and Tyz hold an "
+                    "id), 0 hides it"),
     };
     return table;
 }
@@ -55,6 +59,7 @@ public:
         view_.layer = f.layer;
         view_.occluder = f.occluder;
         view_.slice_axis = f.slice_axis;
+        if (f.tbv >= 0) view_.show[int(RgvcLayer::Tbv)] = f.tbv == 1;
         if (f.slice >= 0) {
             view_.mode = RgvcVoxelMode::Slice;
             view_.slice_index = f.slice;
