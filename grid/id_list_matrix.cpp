@@ -5,6 +5,13 @@
 namespace gridcull {
 
 void IdListMatrix::resize(int width, int height, bool track_touched, int depth, bool linked) {
+    assert(width >= 0 && height >= 0 && depth >= 1);
+    if (width == width_ && height == height_ && height * depth == rows_ &&
+        track_touched == track_touched_ && linked == linked_) {
+        // The same shape: keep the storage a reset culler grew (see the header).
+        clear();
+        return;
+    }
     linked_ = linked;
     std::vector<int32_t>().swap(prev_);
     assert(width >= 0 && height >= 0 && depth >= 1);

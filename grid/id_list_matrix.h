@@ -24,7 +24,9 @@ namespace gridcull {
 class IdListMatrix {
 public:
     // Sizes the matrix and empties it, freeing all storage (the head array comes
-    // back on the next add()). `track_touched` keeps a list of voxels
+    // back on the next add()); to the shape it has already, it only empties it
+    // and keeps its storage, so that a culler reset on the same scene reuses
+    // what it grew (release() frees it). `track_touched` keeps a list of voxels
     // written since the last clear() so that clear() costs only those; use it for
     // matrices cleared every frame, not for ones that mostly add and remove.
     void resize(int width, int height, bool track_touched, int depth = 1, bool linked = false);

@@ -140,7 +140,10 @@ void RgvcCuller::reset(const Scene& scene) {
     rejected_stamp_.assign(n, 0);
     discretized_stamp_.assign(n, 0);
     tbv_.assign(n, Tbv{});
-    tbv_nodes_.assign(n, {});
+    // Each TBV's node list keeps the capacity it grew (reused by a reset on the
+    // same scene).
+    tbv_nodes_.resize(n);
+    for (std::vector<uint64_t>& nodes : tbv_nodes_) nodes.clear();
     tbv_seen_.assign(n, 0);
     tbv_test_ = 0;
     expiry_queue_.reset(n);
@@ -199,7 +202,12 @@ void RgvcCuller::reset(const Scene& scene) {
         static_occluder_.resize(w, h, d);
     else
         static_occluder_.release();
+    // resize() keeps a matrix's storage for the same grid, so a reset on the
+    // same scene reuses what the last run grew; a matrix this scene does not
+    // write is released first, so it holds nothing (it keeps its shape for reads).
+    if (!has_static_) identifiers_static_.release();
     identifiers_static_.resize(w, h, false, d);
+    if (!has_dynamic_) identifiers_dynamic_.release();
     identifiers_dynamic_.resize(w, h, true, d);
     if (dimensions_ == 3) {
         holds_static_.resize(w, h, d);
@@ -207,6 +215,11 @@ void RgvcCuller::reset(const Scene& scene) {
     } else {
         holds_static_.release();
         holds_dynamic_.release();
+    }
+    if (!has_dynamic_) {
+        tbv_matrix_.release();
+        tbv_xz_.release();
+        tbv_yz_.release();
     }
     tbv_matrix_.resize(w, h, false, 1, true);
     if (dimensions_ == 3) {

@@ -1,34 +1,19 @@
 // Counting allocations: this header replaces the global operator new and
 // delete of the test binary that includes it, so include it from exactly one
-// .cpp per binary. Between startCounting() and stopCounting() every operator
-// new adds one to allocationCount(); the tests of "hot per-frame paths do not
-// allocate" measure with it.
+// .cpp per binary. Between startCounting() and stopCounting()
+// (tests/common/allocation_counter.h) every operator new adds one to
+// allocationCount(); the tests of "hot per-frame paths do not allocate"
+// measure with it.
 #pragma once
-#include <atomic>
 #include <cstdlib>
 #include <new>
+
+#include "tests/common/allocation_counter.h"
 
 // GCC 12 flags free() of operator new's memory once it inlines the pair; here
 // both sides are ours and use malloc / free.
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 
-namespace gridcull::test {
-
-inline std::atomic<bool> g_counting{false};
-inline std::atomic<long> g_allocations{0};
-
-inline void startCounting() {
-    g_allocations = 0;
-    g_counting = true;
-}
-inline void stopCounting() {
-    g_counting = false;
-}
-inline long allocationCount() {
-    return g_allocations;
-}
-
-}  // namespace gridcull::test
 
 void* operator new(std::size_t size) {
     if (gridcull::test::g_counting.load(std::memory_order_relaxed))

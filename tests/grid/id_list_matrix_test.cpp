@@ -29,6 +29,23 @@ TEST(IdListMatrix, NoMemoryUntilTheFirstAdd) {
     EXPECT_EQ(listOf(m, 5, 5), std::vector<int32_t>{7});
 }
 
+TEST(IdListMatrix, ResizeToTheSameShapeEmptiesAndKeepsStorage) {
+    IdListMatrix m;
+    m.resize(64, 32, false, 2, true);
+    for (int k = 0; k < 500; ++k) m.addNode(k % 64, k % 32, k);
+    const size_t grown = m.memoryBytes();
+    m.resize(64, 32, false, 2, true);
+    EXPECT_EQ(m.idCount(), 0);
+    EXPECT_TRUE(m.empty(3, 3));
+    EXPECT_EQ(m.memoryBytes(), grown);  // kept, for a culler reset on the same scene
+    m.resize(64, 16, false, 2, true);   // another shape: freed
+    EXPECT_EQ(m.memoryBytes(), size_t(0));
+    m.addNode(1, 1, 9);
+    m.release();
+    m.resize(64, 16, false, 2, true);  // released first: nothing kept
+    EXPECT_EQ(m.memoryBytes(), size_t(0));
+}
+
 TEST(IdListMatrix, AddRemoveMatchesAReferenceMap) {
     SeededRandom rng(11);
     IdListMatrix m;
