@@ -84,13 +84,9 @@ glm::dvec3 RgvcCap3d::world(const RgvcSnapshot& s, double u, double w) const {
 }
 
 void buildRgvcCap3d(const RgvcSnapshot& s, double near, int index, RgvcCap3d& cap) {
-    if (cap.built_from == &s && cap.built_frame == s.frame && cap.built_t == s.t &&
-        cap.built_visits == s.visits.size() && cap.occluder == index)
-        return;
-    cap.built_from = &s;
-    cap.built_frame = s.frame;
-    cap.built_t = s.t;
-    cap.built_visits = s.visits.size();
+    const RgvcSnapshotStamp stamp = RgvcSnapshotStamp::of(s);
+    if (cap.built_from == stamp && cap.occluder == index) return;
+    cap.built_from = stamp;
     cap.valid = false;
     cap.occluder = index;
     cap.cells.clear();

@@ -26,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include "culling/rgvc/rgvc_snapshot.h"
+#include "ui/rgvc/rgvc_snapshot_stamp.h"
 #include "grid/bitmap_vectorize.h"
 #include "ui/debug_draw.h"
 #include "ui/rgvc/rgvc_view.h"
@@ -56,10 +57,7 @@ struct RgvcCap3d {
     std::vector<uint8_t> filled;  // the bitmap, pixel (u, w) at w * width + u
     std::vector<int32_t> cells;   // direction-map cells (cellIndex) its pass covered
     // What it was built from.
-    const RgvcSnapshot* built_from = nullptr;
-    int64_t built_frame = -1;
-    double built_t = 0.0;
-    size_t built_visits = 0;
+    RgvcSnapshotStamp built_from;
 
     // A point of the cap's plane in pixel-corner coordinates (u along b, w along c).
     glm::dvec3 world(const RgvcSnapshot& s, double u, double w) const;

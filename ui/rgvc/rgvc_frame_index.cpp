@@ -7,14 +7,7 @@
 namespace gridcull {
 
 void RgvcFrameIndex::update(const RgvcSnapshot& s, int64_t layer) {
-    Key key;
-    key.snapshot = &s;
-    key.frame = s.frame;
-    key.t = s.t;
-    key.visits = s.visits.size();
-    key.reveals = s.reveals.size();
-    key.occluders = s.occluders.size() + s.occluders3d.size();
-    key.resolution = s.grid.resolution;
+    const RgvcSnapshotStamp key = RgvcSnapshotStamp::of(s);
     const bool same = key == key_;
     if (same && layer == layer_) return;
     res_ = s.grid.resolution;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "culling/rgvc/rgvc_snapshot.h"
+#include "ui/rgvc/rgvc_snapshot_stamp.h"
 
 namespace gridcull {
 
@@ -39,18 +40,7 @@ private:
         return (size_t(z) * size_t(res_.y) + size_t(y)) * size_t(res_.x) + size_t(x);
     }
 
-    struct Key {
-        const RgvcSnapshot* snapshot = nullptr;
-        int64_t frame = -1;
-        double t = 0.0;
-        size_t visits = 0, reveals = 0, occluders = 0;
-        glm::ivec3 resolution{0};
-        bool operator==(const Key& o) const {
-            return snapshot == o.snapshot && frame == o.frame && t == o.t && visits == o.visits &&
-                   reveals == o.reveals && occluders == o.occluders && resolution == o.resolution;
-        }
-    };
-    Key key_;
+    RgvcSnapshotStamp key_;
     int64_t layer_ = -2;  // the layer revealed_tbv_ is for
     glm::ivec3 res_{0};
     std::vector<int32_t> visit_;

@@ -59,11 +59,7 @@ glm::ivec3 rgvcVoxelOfPoint(const RegularGrid& grid, const glm::dvec3& p) {
 void RgvcVoxelBoxes::classify(const RgvcSnapshot& s, const RgvcViewState& view,
                               const RgvcFrameIndex& index, int64_t layer) {
     Key key;
-    key.snapshot = &s;
-    key.frame = s.frame;
-    key.t = s.t;
-    key.visits = s.visits.size();
-    key.reveals = s.reveals.size();
+    key.stamp = RgvcSnapshotStamp::of(s);
     key.layer = layer;
     for (const RgvcLayer l : {RgvcLayer::Tbv, RgvcLayer::Occluder, RgvcLayer::StaticOccluder,
                               RgvcLayer::Occlusion, RgvcLayer::CurrentLayer})

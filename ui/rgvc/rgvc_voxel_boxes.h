@@ -35,6 +35,7 @@
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "ui/debug_draw.h"
 #include "ui/rgvc/rgvc_frame_index.h"
+#include "ui/rgvc/rgvc_snapshot_stamp.h"
 #include "ui/rgvc/rgvc_view.h"
 
 namespace gridcull {
@@ -74,15 +75,11 @@ public:
 private:
     // What the kinds and the faces were computed for.
     struct Key {
-        const RgvcSnapshot* snapshot = nullptr;
-        int64_t frame = -1;
-        double t = 0.0;
-        size_t visits = 0, reveals = 0;
+        RgvcSnapshotStamp stamp;
         int64_t layer = 0;
         uint32_t toggles = 0;
         bool operator==(const Key& o) const {
-            return snapshot == o.snapshot && frame == o.frame && t == o.t && visits == o.visits &&
-                   reveals == o.reveals && layer == o.layer && toggles == o.toggles;
+            return stamp == o.stamp && layer == o.layer && toggles == o.toggles;
         }
     };
     void classify(const RgvcSnapshot& s, const RgvcViewState& view, const RgvcFrameIndex& index,

@@ -98,7 +98,9 @@ TEST(Rgvc3dTraversal, VisitsEveryFrustumVoxelOnceInChessOrder) {
                         for (int x = 0; x < r.x; ++x) {
                             const bool passes = voxelPassesPlanes(scene.grid, camera, {x, y, z});
                             const bool got = seen.count({x, y, z}) > 0;
-                            if (got) ASSERT_TRUE(passes) << x << "," << y << "," << z;
+                            if (got) {
+                                ASSERT_TRUE(passes) << x << "," << y << "," << z;
+                            }
                             const bool want =
                                 passes && boxesMeet(scene.grid.voxelBounds({x, y, z}), hull);
                             if (!want) continue;
@@ -115,7 +117,9 @@ TEST(Rgvc3dTraversal, VisitsEveryFrustumVoxelOnceInChessOrder) {
             }
         });
     }
-    if (!test::singleSeedRun()) EXPECT_GT(checked, 10000);
+    if (!test::singleSeedRun()) {
+        EXPECT_GT(checked, 10000);
+    }
 }
 
 TEST(Rgvc3dTbv, TwoOfThreeProjectionsFindExactlyTheBoxSurface) {
@@ -208,7 +212,9 @@ TEST(Rgvc3dOcclusion, EveryVoxelInHIsWhollyHidden) {
             }
         });
     }
-    if (!test::singleSeedRun()) EXPECT_GT(occluded, 1000);
+    if (!test::singleSeedRun()) {
+        EXPECT_GT(occluded, 1000);
+    }
 }
 
 TEST(Rgvc3dCuller, CapturingASnapshotChangesNothingCulled) {

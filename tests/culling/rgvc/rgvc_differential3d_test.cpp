@@ -4,88 +4,35 @@
 //
 // Rgvc3dDifferential.*: 500 scenes x 20 frames with the default options, and
 // fewer with variations. A longer sweep:
-//   GRIDCULL_SWEEP_SCENES=5000 build/tests/core_tests \
+//   GRIDCULL_SWEEP_SCENES=5000 build/tests/core_tests
 //       --gtest_filter='Rgvc3dDifferential.NeverCullsWhatTheOracleSees'
+// (one command line).
 // On failure the seed and frame are printed (replay with GRIDCULL_SEED=N).
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "culling/baseline/vfc_culler.h"
-#include "culling/oracle/exact_oracle.h"
-#include "culling/rgvc/rgvc_culler.h"
 #include "tests/common/test_seeds.h"
 #include "tests/culling/rgvc/rgvc_random_scene3d.h"
+#include "tests/culling/rgvc/rgvc_sweep.h"
 
 namespace gridcull {
 namespace {
 
-struct Totals {
-    int64_t frames = 0;
-    int64_t false_culls = 0;
-    int64_t pvs = 0;
-    int64_t exact = 0;
-    int64_t vfc = 0;
-    int64_t voxels_visited = 0;
-    int64_t occluded_frames = 0;  // frames where rgvc kept fewer than vfc
-};
+using Totals = test::RgvcSweepTotals;
 
 void runScene(uint64_t seed, const RgvcOptions& options, Totals& totals) {
-    const Scene scene = test::rgvcRandomScene3d(seed);
-    RgvcCuller rgvc(options);
-    ExactOracle exact;
-    VfcCuller vfc;
-    rgvc.reset(scene);
-    exact.reset(scene);
-    vfc.reset(scene);
-    FrameResult got, want, frustum;
-    for (int frame = 0; frame < test::kRgvc3dFrames; ++frame) {
-        const double t = scene.timeOfFrame(frame);
-        const Camera camera = cameraAt(scene, t);
-        rgvc.cull(scene, camera, t, got);
-        exact.cull(scene, camera, t, want);
-        vfc.cull(scene, camera, t, frustum);
-        std::string missing;
-        int64_t missed = 0;
-        for (const int id : want.pvs)
-            if (!std::binary_search(got.pvs.begin(), got.pvs.end(), id)) {
-                missing += (missing.empty() ? "" : ",") + std::to_string(id);
-                ++missed;
-            }
-        if (missed > 0)
-            ADD_FAILURE() << "false cull: seed " << seed << " frame " << frame << " t " << t
-                          << " camera (" << camera.position.x << ", " << camera.position.y << ", "
-                          << camera.position.z << ") fov " << camera.fov_deg << " near "
-                          << camera.near << " far " << camera.far << " missing ids " << missing;
-        totals.frames += 1;
-        totals.false_culls += missed;
-        totals.pvs += int64_t(got.pvs.size());
-        totals.exact += int64_t(want.pvs.size());
-        totals.vfc += int64_t(frustum.pvs.size());
-        totals.voxels_visited += got.stats.get(Counter::VoxelsVisited);
-        totals.occluded_frames += got.pvs.size() < frustum.pvs.size() ? 1 : 0;
-    }
+    test::rgvcSweepScene(test::rgvcRandomScene3d(seed), test::kRgvc3dFrames, seed, options, totals);
 }
 
-void report(const char* name, size_t scenes, const Totals& t) {
-    std::printf(
-        "[ rgvc 3D ] %s: %zu scenes x %d frames: false culls %lld, PVS/exact %.3f (vfc %.3f), "
-        "frames culling more than vfc %.1f%%, mean voxels visited %.0f\n",
-        name, scenes, test::kRgvc3dFrames, (long long)t.false_culls,
-        t.exact > 0 ? double(t.pvs) / double(t.exact) : 0.0,
-        t.exact > 0 ? double(t.vfc) / double(t.exact) : 0.0,
-        100.0 * double(t.occluded_frames) / double(std::max<int64_t>(1, t.frames)),
-        double(t.voxels_visited) / double(std::max<int64_t>(1, t.frames)));
+void report(const char* name, size_t scenes, const Totals& totals) {
+    test::rgvcSweepReport("3D", name, scenes, test::kRgvc3dFrames, totals);
 }
 
 TEST(Rgvc3dDifferential, NeverCullsWhatTheOracleSees) {
     Totals totals;
-    int scenes = 500;
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
-        scenes = std::max(1, std::atoi(count));
+    const int scenes = test::rgvcSweepScenes(500);
     const std::vector<uint64_t> seeds = test::seedsToRun(300000, scenes);
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });

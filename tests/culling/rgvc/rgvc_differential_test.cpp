@@ -10,88 +10,31 @@
 //   GRIDCULL_SWEEP_SCENES=10000 build/tests/core_tests --gtest_filter='RgvcSweep.*' On failure the
 //   seed and
 // frame are printed with the command that replays it (GRIDCULL_SEED=N).
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "culling/baseline/vfc_culler.h"
-#include "culling/oracle/exact_oracle.h"
-#include "culling/rgvc/rgvc_culler.h"
 #include "tests/common/test_seeds.h"
 #include "tests/culling/rgvc/rgvc_random_scene.h"
+#include "tests/culling/rgvc/rgvc_sweep.h"
 
 namespace gridcull {
 namespace {
 
-struct SweepTotals {
-    int64_t frames = 0;
-    int64_t false_culls = 0;
-    int64_t pvs = 0;
-    int64_t exact = 0;
-    int64_t vfc = 0;
-    int64_t objects = 0;
-    int64_t voxels_visited = 0;
-};
+using test::RgvcSweepTotals;
 
-std::string idList(const std::vector<int>& ids) {
-    std::string s;
-    for (const int id : ids) s += (s.empty() ? "" : ",") + std::to_string(id);
-    return s;
+void runScene(uint64_t seed, const RgvcOptions& options, RgvcSweepTotals& totals) {
+    test::rgvcSweepScene(test::rgvcRandomScene(seed), test::kRgvcFrames, seed, options, totals);
 }
 
-void runScene(uint64_t seed, const RgvcOptions& options, SweepTotals& totals) {
-    const Scene scene = test::rgvcRandomScene(seed);
-    RgvcCuller rgvc(options);
-    ExactOracle exact;
-    VfcCuller vfc;
-    rgvc.reset(scene);
-    exact.reset(scene);
-    vfc.reset(scene);
-    FrameResult got, want, frustum;
-    for (int frame = 0; frame < test::kRgvcFrames; ++frame) {
-        const double t = scene.timeOfFrame(frame);
-        const Camera camera = cameraAt(scene, t);
-        rgvc.cull(scene, camera, t, got);
-        exact.cull(scene, camera, t, want);
-        vfc.cull(scene, camera, t, frustum);
-        std::vector<int> missing;
-        for (const int id : want.pvs)
-            if (!std::binary_search(got.pvs.begin(), got.pvs.end(), id)) missing.push_back(id);
-        if (!missing.empty()) {
-            ADD_FAILURE() << "false cull: seed " << seed << " frame " << frame << " t " << t
-                          << " camera (" << camera.position.x << ", " << camera.position.y
-                          << ") fov " << camera.fov_deg << " far " << camera.far << " missing ids "
-                          << idList(missing);
-        }
-        EXPECT_TRUE(std::is_sorted(got.pvs.begin(), got.pvs.end()));
-        totals.frames += 1;
-        totals.false_culls += int64_t(missing.size());
-        totals.pvs += int64_t(got.pvs.size());
-        totals.exact += int64_t(want.pvs.size());
-        totals.vfc += int64_t(frustum.pvs.size());
-        totals.objects += int64_t(scene.objects.size());
-        totals.voxels_visited += got.stats.get(Counter::VoxelsVisited);
-    }
-}
-
-void report(const char* name, int scenes, const SweepTotals& totals) {
-    std::printf(
-        "[ rgvc ] %s: %d scenes x %d frames: false culls %lld, mean PVS %.2f, mean exact %.2f, "
-        "PVS/exact %.3f (vfc %.3f), mean objects %.1f, mean voxels visited %.0f\n",
-        name, scenes, test::kRgvcFrames, (long long)totals.false_culls,
-        double(totals.pvs) / double(totals.frames), double(totals.exact) / double(totals.frames),
-        totals.exact > 0 ? double(totals.pvs) / double(totals.exact) : 0.0,
-        totals.exact > 0 ? double(totals.vfc) / double(totals.exact) : 0.0,
-        double(totals.objects) / double(totals.frames),
-        double(totals.voxels_visited) / double(totals.frames));
+void report(const char* name, int scenes, const RgvcSweepTotals& totals) {
+    test::rgvcSweepReport("2D", name, size_t(scenes), test::kRgvcFrames, totals);
 }
 
 TEST(RgvcDifferential, NeverCullsWhatTheOracleSees) {
     constexpr int kScenes = 100;
-    SweepTotals totals;
+    RgvcSweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(1000, kScenes);
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });
@@ -111,7 +54,7 @@ TEST(RgvcDifferential, BothOccluderExtensionsStayConservative) {
         RgvcOptions options;
         options.extension = extension;
         SCOPED_TRACE("extension " + std::to_string(extension));
-        SweepTotals totals;
+        RgvcSweepTotals totals;
         const std::vector<uint64_t> seeds = test::seedsToRun(1000, kScenes);
         for (const uint64_t seed : seeds)
             test::withSeed(seed, [&] { runScene(seed, options, totals); });
@@ -122,7 +65,7 @@ TEST(RgvcDifferential, BothOccluderExtensionsStayConservative) {
 }
 
 TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
-    SweepTotals totals;
+    RgvcSweepTotals totals;
     for (const int extension : {0, 1}) {
         for (const double validity : {0.05, 5.0}) {
             RgvcOptions options;
@@ -138,7 +81,7 @@ TEST(RgvcDifferential, ShortAndLongTbvValidityStayConservative) {
 }
 
 TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
-    SweepTotals totals;
+    RgvcSweepTotals totals;
     for (const int extension : {0, 1}) {
         for (const int resolution : {3, 97}) {
             RgvcOptions options;
@@ -154,10 +97,8 @@ TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
 }
 
 TEST(RgvcSweep, Full) {
-    int scenes = 1000;
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
-        scenes = std::max(1, std::atoi(count));
-    SweepTotals totals;
+    const int scenes = test::rgvcSweepScenes(1000);
+    RgvcSweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(100000, scenes);
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });

@@ -50,7 +50,9 @@ void checkHistory(const Scene& scene, int64_t& occluded_seen) {
             }
             // O set by a reveal during the traversal: at a layer the traversal had reached.
             const int32_t opaque = s.o_layer[i];
-            if (opaque != kRgvcNoLayer) EXPECT_LE(opaque, s.last_layer);
+            if (opaque != kRgvcNoLayer) {
+                EXPECT_LE(opaque, s.last_layer);
+            }
         }
         for (const RgvcRevealView& r : s.reveals) {
             EXPECT_GE(r.layer, -1);
@@ -64,14 +66,18 @@ TEST(RgvcHistory, VisitsAgreeWithTheLayersVoxelsEnteredH2d) {
     int64_t occluded = 0;
     for (const uint64_t seed : test::seedsToRun(600000, 40))
         test::withSeed(seed, [&] { checkHistory(test::rgvcRandomScene(seed), occluded); });
-    if (!test::singleSeedRun()) EXPECT_GT(occluded, 0);
+    if (!test::singleSeedRun()) {
+        EXPECT_GT(occluded, 0);
+    }
 }
 
 TEST(RgvcHistory, VisitsAgreeWithTheLayersVoxelsEnteredH3d) {
     int64_t occluded = 0;
     for (const uint64_t seed : test::seedsToRun(610000, 40))
         test::withSeed(seed, [&] { checkHistory(test::rgvcRandomScene3d(seed), occluded); });
-    if (!test::singleSeedRun()) EXPECT_GT(occluded, 0);
+    if (!test::singleSeedRun()) {
+        EXPECT_GT(occluded, 0);
+    }
 }
 
 }  // namespace

@@ -86,6 +86,22 @@ inline void rgvcRandomMotion(SeededRandom& rng, SceneObject& o, int dimensions, 
     }
 }
 
+// Ends the camera path with a teleport to `to`, looking at `target`: two keys
+// a hair apart in time, far apart in space; the path is rescaled so that the
+// teleport falls inside `duration` seconds (the scene's frames).
+inline void rgvcAppendTeleport(Scene& scene, const glm::dvec3& to, const glm::dvec3& target,
+                               double duration) {
+    CameraKey a = scene.camera.path.back(), b;
+    a.t = scene.camera.path.back().t + 0.95;
+    b.t = a.t + 1e-3;
+    b.position = to;
+    b.target = target;
+    scene.camera.path.push_back(a);
+    scene.camera.path.push_back(b);
+    const double scale = (duration - 0.2) / scene.camera.path.back().t;
+    for (CameraKey& key : scene.camera.path) key.t *= scale;
+}
+
 inline Scene rgvcRandomScene(uint64_t seed) {
     SeededRandom rng(seed);
     const double width = rng.uniform(40.0, 160.0);
@@ -156,17 +172,10 @@ inline Scene rgvcRandomScene(uint64_t seed) {
         scene.camera.path.push_back(key);
     }
     if (rng.uniform() < 0.15) {
-        // A teleport: two keys a hair apart in time, far apart in space.
-        CameraKey a = scene.camera.path.back(), b;
-        a.t = scene.camera.path.back().t + 0.95;
-        b.t = a.t + 1e-3;
-        b.position = rgvcRandomViewpoint(rng, scene);
-        b.target = glm::dvec3(rng.uniform(lo.x, lo.x + width), rng.uniform(lo.y, lo.y + height), 0);
-        scene.camera.path.push_back(a);
-        scene.camera.path.push_back(b);
-        // Keep the teleport inside the 20 frames.
-        const double scale = (duration - 0.2) / scene.camera.path.back().t;
-        for (CameraKey& key : scene.camera.path) key.t *= scale;
+        const glm::dvec3 to = rgvcRandomViewpoint(rng, scene);
+        const glm::dvec3 target(rng.uniform(lo.x, lo.x + width), rng.uniform(lo.y, lo.y + height),
+                                0);
+        rgvcAppendTeleport(scene, to, target, duration);
     }
     return scene;
 }

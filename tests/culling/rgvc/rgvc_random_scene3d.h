@@ -151,16 +151,9 @@ inline Scene rgvcRandomScene3d(uint64_t seed) {
         scene.camera.path.push_back(key);
     }
     if (rng.uniform() < 0.15) {
-        // A teleport: two keys a hair apart in time, far apart in space.
-        CameraKey a = scene.camera.path.back(), b;
-        a.t = scene.camera.path.back().t + 0.95;
-        b.t = a.t + 1e-3;
-        b.position = rgvc3dViewpoint(rng, scene);
-        b.target = rgvc3dPoint(rng, world);
-        scene.camera.path.push_back(a);
-        scene.camera.path.push_back(b);
-        const double scale = (duration - 0.2) / scene.camera.path.back().t;
-        for (CameraKey& key : scene.camera.path) key.t *= scale;
+        const glm::dvec3 to = rgvc3dViewpoint(rng, scene);
+        const glm::dvec3 target = rgvc3dPoint(rng, world);
+        rgvcAppendTeleport(scene, to, target, duration);
     }
     return scene;
 }

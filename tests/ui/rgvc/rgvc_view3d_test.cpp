@@ -444,7 +444,9 @@ TEST_F(RgvcView3dTest, ACulledObjectListsTheVoxelsThatHidIt) {
         for (const RgvcVisit& s : snap_->visits)
             if (s.voxel == glm::ivec2(v.voxel.x, v.voxel.y) && s.z == v.voxel.z) visit = &s;
         EXPECT_EQ(v.layer >= 0, visit != nullptr);
-        if (visit) EXPECT_EQ(v.occluded, visit->occluded);
+        if (visit) {
+            EXPECT_EQ(v.occluded, visit->occluded);
+        }
     }
     // Open first, then occluded, then not reached.
     EXPECT_GE(object.voxels.back().layer, -1);
