@@ -35,6 +35,11 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
      "bounding volume hierarchies rebuilt from scratch instead of refitted"},
     {Counter::ProbabilitySkips, "probability_skips",
      "pixel queries saved by rating a cell free from how little was drawn into it"},
+    {Counter::StateFetches, "state_fetches",
+     "moving objects whose current position was needed this frame (one update message each "
+     "in a distributed virtual environment)"},
+    {Counter::TbvMessages, "tbv_messages",
+     "temporal bounding volumes requested from the objects' controllers (one message each)"},
 }};
 
 constexpr bool inCounterOrder() {

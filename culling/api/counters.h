@@ -36,6 +36,8 @@ enum class Counter : uint8_t {
     CellUpdates,
     BvhRebuilds,
     ProbabilitySkips,
+    StateFetches,
+    TbvMessages,
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

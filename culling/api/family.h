@@ -23,6 +23,11 @@ struct AlgorithmEntry {
     std::string name;  // as --algo takes it, e.g. "vfc"
     int dimensions = kRunsBoth;
     std::string summary;  // one line for help and the window
+    // Frames in a row an object the oracle sees may be missing from the PVS by
+    // design (Sudarsky & Gotsman's implicit update: 1); 0 for a conservative
+    // algorithm. Tests hold the algorithm to it: a miss longer than this is a
+    // false cull.
+    int late_frames = 0;
 };
 
 // Everything a family's factory is given to make one culler.

@@ -2,6 +2,7 @@
 #include "culling/registry/registry.h"
 
 #include "culling/baseline/baseline_family.h"
+#include "culling/hzb_tbv/hzb_tbv_family.h"
 #include "culling/lazy_grid/lazy_grid_family.h"
 #include "culling/oracle/oracle_family.h"
 #include "culling/rgvc/rgvc_family.h"
@@ -11,7 +12,7 @@ namespace gridcull {
 namespace {
 
 std::vector<FamilyEntry> builtInFamilies() {
-    return {baselineFamily(), oracleFamily(), rgvcFamily(), lazyGridFamily()};
+    return {baselineFamily(), oracleFamily(), rgvcFamily(), lazyGridFamily(), hzbTbvFamily()};
 }
 
 struct Table {

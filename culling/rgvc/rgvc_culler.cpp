@@ -10,93 +10,10 @@
 
 #include "culling/baseline/frustum_tests.h"
 #include "culling/scene/mesh_interior.h"
+#include "culling/scene/motion_bounds.h"
 #include "grid/chess_ring.h"
 
 namespace gridcull {
-
-namespace {
-
-// An upper bound of the object's speed: the declared or computed max_speed, and
-// whatever its motion data imply (hand-built scenes may leave max_speed at 0).
-double maxSpeedOf(const SceneObject& object) {
-    const Motion& m = object.motion;
-    double speed = m.max_speed;
-    switch (m.kind) {
-        case MotionKind::Static:
-            return 0.0;
-        case MotionKind::Linear:
-            speed = std::max(speed, glm::length(m.velocity));
-            break;
-        case MotionKind::Random:
-            for (const glm::dvec3& v : m.segment_velocities)
-                speed = std::max(speed, glm::length(v));
-            break;
-        case MotionKind::Keyframes:
-            for (size_t i = 1; i < m.keys.size(); ++i) {
-                const double span = m.keys[i].t - m.keys[i - 1].t;
-                const double dist = glm::length(m.keys[i].position - m.keys[i - 1].position);
-                if (span > 0.0) speed = std::max(speed, dist / span);
-            }
-            break;
-    }
-    return speed;
-}
-
-// Where the object can ever be: linear and random motion fold back at the
-// world's walls (Scene::displacementAt), so on each axis where its t = 0 bounds
-// fit inside the world it stays in the world, and on the others it stays
-// still; a keyframed object stays in the box of its bounds at the keys.
-Aabb reachOf(const SceneObject& object, const Aabb& world, int dimensions) {
-    const Aabb& b = object.bounds;
-    switch (object.motion.kind) {
-        case MotionKind::Static:
-            return b;
-        case MotionKind::Keyframes: {
-            if (object.motion.keys.empty()) return b;
-            Aabb reach = b.translated(object.motion.keys.front().position - object.anchor);
-            for (const PositionKey& key : object.motion.keys)
-                reach.merge(b.translated(key.position - object.anchor));
-            return reach;
-        }
-        case MotionKind::Linear:
-        case MotionKind::Random:
-            break;
-    }
-    Aabb reach = b;
-    for (int a = 0; a < dimensions; ++a) {
-        const double lo = world.min[a] - b.min[a], hi = world.max[a] - b.max[a];
-        if (lo > 0.0 || hi < 0.0 || !(hi > lo)) continue;
-        reach.min[a] = world.min[a];
-        reach.max[a] = world.max[a];
-    }
-    return reach;
-}
-
-// The radius around the object's anchor that holds the whole shape (2D).
-double boundingRadiusOf(const SceneObject& object) {
-    const glm::dvec3 a = object.anchor;
-    switch (object.shape) {
-        case ShapeKind::Sphere:
-            return object.radius + glm::length(object.center - a);
-        case ShapeKind::Polygon: {
-            double r = 0.0;
-            for (const glm::dvec3& p : object.points) r = std::max(r, glm::length(p - a));
-            return r;
-        }
-        case ShapeKind::Box:
-        case ShapeKind::Mesh:
-            break;
-    }
-    const Aabb& b = object.bounds;
-    double r = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        const glm::dvec3 corner{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, 0.0};
-        r = std::max(r, glm::length(corner - glm::dvec3(a.x, a.y, 0.0)));
-    }
-    return r;
-}
-
-}  // namespace
 
 const DebugSnapshotKind RgvcSnapshot::kKind{"rgvc"};
 
@@ -159,7 +76,7 @@ void RgvcCuller::reset(const Scene& scene) {
     for (size_t i = 0; i < n; ++i) {
         const SceneObject& object = scene.objects[i];
         max_speed_[i] = maxSpeedOf(object);
-        if (dimensions_ == 2) bound_radius_[i] = boundingRadiusOf(object);
+        if (dimensions_ == 2) bound_radius_[i] = boundingRadiusOf(object, 2);
         reach_[i] = reachOf(object, grid_.world, dimensions_);
         bool in = true;
         for (int a = 0; a < axes; ++a)

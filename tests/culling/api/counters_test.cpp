@@ -19,7 +19,8 @@ TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
         "voxels_visited", "tbv_created",    "tbv_expired",      "tbv_revealed",
         "object_updates", "pixel_queries",  "nodes_visited",    "triangles_drawn",
         "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
-        "cell_updates",   "bvh_rebuilds",   "probability_skips"};
+        "cell_updates",   "bvh_rebuilds",   "probability_skips", "state_fetches",
+        "tbv_messages"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {

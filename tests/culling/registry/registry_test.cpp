@@ -17,7 +17,8 @@ namespace {
 TEST(Registry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = algorithmNames();
     EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
-                                               "lazy-grid-z", "busy-grid", "busy-grid-tight"}));
+                                               "lazy-grid-z", "busy-grid", "busy-grid-tight",
+                                               "hzb-tbv", "hzb-tbvi", "hzb"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, KnobValues{}, error);
@@ -42,7 +43,8 @@ TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
     EXPECT_EQ(algorithmNames(2), (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
     EXPECT_EQ(algorithmNames(3),
               (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z",
-                                        "busy-grid", "busy-grid-tight"}));
+                                        "busy-grid", "busy-grid-tight", "hzb-tbv", "hzb-tbvi",
+                                        "hzb"}));
     std::string why;
     EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));
     EXPECT_TRUE(algorithmFits("lazy-grid", test::scene3d(), why));

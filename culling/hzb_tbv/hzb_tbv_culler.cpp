@@ -1,0 +1,229 @@
+// `hzb-tbv`, `hzb-tbvi`, `hzb`: Sudarsky & Gotsman, sections 3.3, 3.6 and 4;
+// hzb_tbv_culler.h gives the frame's steps and the departures from the paper.
+#include "culling/hzb_tbv/hzb_tbv_culler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "culling/baseline/frustum_tests.h"
+#include "culling/scene/motion_bounds.h"
+
+namespace gridcull {
+
+namespace {
+
+Aabb toAabb(const TbvBox& b) {
+    return {b.min, b.max};
+}
+
+TbvBox toTbvBox(const Aabb& b) {
+    return {b.min, b.max};
+}
+
+}  // namespace
+
+HzbTbvCuller::HzbTbvCuller(std::string name, bool use_tbvs, TbvUpdateMode mode,
+                           const HzbTbvOptions& options, int reference_resolution)
+    : name_(std::move(name)),
+      use_tbvs_(use_tbvs),
+      mode_(mode),
+      options_(options),
+      resolution_(options.resolution > 0 ? options.resolution : reference_resolution) {
+    if (resolution_ <= 0) resolution_ = kDefaultImageResolution;
+    if (!(options_.validity_s > 0.0) || !std::isfinite(options_.validity_s))
+        options_.validity_s = HzbTbvOptions{}.validity_s;
+}
+
+void HzbTbvCuller::reset(const Scene& scene) {
+    frame_ = 0;
+    ready_ = scene.dimensions == 3;
+    if (!ready_) return;
+    const size_t n = scene.objects.size();
+    max_speed_.assign(n, 0.0);
+    bound_radius_.assign(n, 0.0);
+    tested_stamp_.assign(n, 0);
+    dynamic_.clear();
+    reveals_.clear();
+    reveals_.reserve(n);
+    size_t mesh_vertices = 0, keys = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (object.isDynamic()) {
+            dynamic_.push_back(int(i));
+            max_speed_[i] = maxSpeedOf(object);
+            bound_radius_[i] = boundingRadiusOf(object, 3);
+        }
+        if (object.mesh) mesh_vertices = std::max(mesh_vertices, object.mesh->vertices.size());
+        keys = std::max(keys, object.motion.keys.size());
+    }
+    key_times_.reserve(keys);
+    buffer_.reserveMeshVertices(mesh_vertices);
+
+    OctreeParams params;
+    params.bounds = scene.grid.world;
+    params.max_depth = std::clamp(options_.octree_depth, 0, kMaxHzbOctreeDepth);
+    octree_.reset(params);
+    // Every object and its TBV share one entry, so n entries; nodes: a path of
+    // at most max_depth + 1 per entry.
+    octree_.reserve(int(std::min<size_t>(n * size_t(params.max_depth + 1) + 1, 1u << 22)), int(n));
+    for (size_t i = 0; i < n; ++i)
+        if (!scene.objects[i].isDynamic()) octree_.insert(int(i), scene.objects[i].bounds);
+
+    TbvManagerOptions tbv;
+    tbv.mode = mode_;
+    tbv.validity_mode =
+        options_.adaptive_validity ? TbvValidityMode::Adaptive : TbvValidityMode::Fixed;
+    tbv.initial_validity = options_.validity_s;
+    tbv.validity_floor = scene.dt;
+    // TBVs made in one frame (all hidden objects at the start) would otherwise
+    // all end in one later frame: a stalled frame.
+    tbv.spread_validity = true;
+    tbv.invalidate_fraction = std::clamp(options_.invalidate_fraction, 0.0, 1.0);
+    tbv.seed = scene.seed;
+    tbv_.reset(n, tbv);
+    for (const int index : dynamic_) tbv_.addDynamic(index);
+}
+
+Aabb HzbTbvCuller::currentBox(int index) const {
+    const SceneObject& object = scene_->objects[size_t(index)];
+    if (!object.isDynamic()) return object.bounds;
+    return object.bounds.translated(scene_->displacementAt(object, t_));
+}
+
+bool HzbTbvCuller::boxMayBeVisible(const Aabb& box) {
+    if (!boxMayIntersectFrustum(box, *camera_)) return false;
+    out_->stats.add(Counter::OcclusionTests, 1);
+    return pyramid_.boxMayBeVisible(mapping_.project(box));
+}
+
+void HzbTbvCuller::writeInOctree(int index, const Aabb& box) {
+    if (octree_.contains(index))
+        octree_.update(index, box);
+    else
+        octree_.insert(index, box);
+    out_->stats.add(Counter::ObjectUpdates, 1);
+}
+
+void HzbTbvCuller::visitEntry(int index) {
+    if (use_tbvs_ && tbv_.hasTbv(index)) {
+        // A hidden object's TBV: while it stays hidden, so does its object.
+        if (!boxMayBeVisible(toAabb(tbvBounds(tbv_.tbv(index).shape)))) return;
+        tbv_.reveal(index);
+        reveals_.push_back(index);
+    }
+    testAndDraw(index);
+}
+
+void HzbTbvCuller::testAndDraw(int index) {
+    if (tested_stamp_[size_t(index)] == frame_) return;
+    tested_stamp_[size_t(index)] = frame_;
+    const Aabb box = currentBox(index);
+    if (!boxMayBeVisible(box)) return;
+    const SceneObject& object = scene_->objects[size_t(index)];
+    const glm::dvec3 shift =
+        object.isDynamic() ? scene_->displacementAt(object, t_) : glm::dvec3(0.0);
+    bool drawn = false;
+    switch (object.shape) {
+        case ShapeKind::Sphere:
+            drawn = buffer_.drawSphere(index, object.center + shift, object.radius);
+            break;
+        case ShapeKind::Box:
+            drawn = buffer_.drawBox(index, object.box.translated(shift));
+            break;
+        case ShapeKind::Mesh:
+            if (object.mesh) drawn = buffer_.drawMesh(index, *object.mesh, object.center + shift);
+            break;
+        case ShapeKind::Polygon:
+            break;  // 2D only; this family runs on 3D scenes
+    }
+    if (drawn) pyramid_.refresh(buffer_, buffer_.lastDrawCols(), buffer_.lastDrawRows());
+    out_->pvs.push_back(object.id);
+    if (use_tbvs_ && object.isDynamic()) tbv_.observe(index);
+}
+
+TbvShape HzbTbvCuller::makeTbv(int index, double validity) {
+    const SceneObject& object = scene_->objects[size_t(index)];
+    const glm::dvec3 shift = scene_->displacementAt(object, t_);
+    const double speed = max_speed_[size_t(index)];
+    const auto choice = HzbTbvShapeChoice(options_.tbv_shape);
+    if (choice == HzbTbvShapeChoice::Box)
+        return boxTbv(3, toTbvBox(object.bounds.translated(shift)), speed, validity);
+    if (choice == HzbTbvShapeChoice::Swept && object.motion.kind == MotionKind::Keyframes &&
+        !object.motion.keys.empty()) {
+        const std::vector<PositionKey>& keys = object.motion.keys;
+        auto box_at = [&](double s) {
+            return toTbvBox(object.bounds.translated(scene_->displacementAt(object, s)));
+        };
+        key_times_.clear();
+        for (const PositionKey& key : keys) key_times_.push_back(key.t);
+        return sweptTbv(3, box_at, key_times_.data(), key_times_.size(), t_, validity);
+    }
+    return sphereTbv(3, object.anchor + shift, bound_radius_[size_t(index)], speed, validity);
+}
+
+void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
+    out.pvs.clear();
+    out.stats = CullStats{};
+    if (!ready_) return;
+    ++frame_;
+    scene_ = &scene;
+    camera_ = &camera;
+    out_ = &out;
+    t_ = t;
+    int width = 0, height = 0;
+    imageSizeForAspect(resolution_, camera.aspect, width, height);
+    buffer_.resize(width, height);
+    buffer_.begin(camera);
+    mapping_.set(camera, width, height);
+    pyramid_.build(buffer_);
+
+    // Steps 1 and 2.
+    if (use_tbvs_) {
+        tbv_.beginFrame(t, [&](int index, TbvDropReason) { octree_.remove(index); });
+        for (const int index : tbv_.objectsToUpdate()) {
+            tbv_.updVis(index);
+            writeInOctree(index, currentBox(index));
+        }
+    } else {
+        for (const int index : dynamic_) writeInOctree(index, currentBox(index));
+    }
+
+    // Step 3. Objects outside the world sit at the root, whose box does not
+    // bound them: the root is then never skipped on its box.
+    reveals_.clear();
+    const bool root_holds_outside = octree_.outsideCount() > 0;
+    int64_t nodes = 0;
+    octree_.traverseFrontToBack(camera.position, [&](const OctreeNodeView& node) {
+        ++nodes;
+        const bool unbounded = node.id == DynamicOctree::kRoot && root_holds_outside;
+        if (!unbounded && !boxMayBeVisible(node.box)) return false;
+        for (const int index : node.objects) visitEntry(index);
+        return true;
+    });
+    out.stats.set(Counter::NodesVisited, nodes);
+    // The revealed objects replace their TBVs in T.
+    for (const int index : reveals_) writeInOctree(index, currentBox(index));
+
+    // Step 4.
+    if (use_tbvs_) {
+        tbv_.endFrame([&](int index, double& validity) {
+            const TbvShape shape = makeTbv(index, validity);
+            writeInOctree(index, toAabb(tbvBounds(shape)));
+            return shape;
+        });
+        const TbvFrameCounters& c = tbv_.frameCounters();
+        out.stats.set(Counter::TbvCreated, c.tbv_created);
+        out.stats.set(Counter::TbvExpired, c.tbv_expired);
+        out.stats.set(Counter::TbvRevealed, c.tbv_revealed);
+        out.stats.set(Counter::StateFetches, c.state_fetches);
+        out.stats.set(Counter::TbvMessages, c.tbv_messages);
+    } else {
+        // Every dynamic object's configuration, every frame.
+        out.stats.set(Counter::StateFetches, int64_t(dynamic_.size()));
+        out.stats.set(Counter::TbvMessages, 0);
+    }
+    out.stats.add(Counter::ObjectUpdates, 0);
+    std::sort(out.pvs.begin(), out.pvs.end());
+}
+
+}  // namespace gridcull

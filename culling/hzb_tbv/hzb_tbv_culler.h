@@ -1,0 +1,118 @@
+// `hzb-tbv`, `hzb-tbvi` and `hzb`: octree-based dynamic scene occlusion culling
+// after O. Sudarsky & C. Gotsman, "Dynamic scene occlusion culling" (IEEE TVCG
+// 1999), section 3.3 (the four steps of a frame), section 3.6 (explicit and
+// implicit update) and section 4 (the octree, updated under the least common
+// ancestor), on Greene, Kass & Miller's hierarchical z-buffer (section 2.1.1).
+//
+// T is a DynamicOctree (dynamic_octree.h) holding static objects, dynamic
+// objects in V at their configuration, and hidden dynamic objects' TBVs in their
+// place (one entry per object id: the object or its TBV). D, Q and V are the
+// TbvManager's (culling/tbv/tbv_manager.h). A frame:
+//   1. expired, violated (and Fig. 14's randomly invalidated) TBVs leave T;
+//   2. TBVe: every object of V is written in T at its current box (LCA update);
+//      TBVi: nothing (T follows the objects through their TBVs only);
+//   3. T is traversed front to back from the eye. A node outside the frustum or
+//      hidden by the Z-pyramid is skipped with its subtree. Each entry of a node
+//      is tested on its box the same way; a visible object is drawn into the
+//      software z-buffer (the shared rasterizer, culling/raster) and the pyramid
+//      is refreshed under it, so that what is drawn hides what comes after. A
+//      visible TBV is revealed: its object's current box is tested and drawn at
+//      once, and T is corrected after the traversal (T is not changed while it
+//      is being walked; section 3.3's remark on step 3);
+//   4. the objects of V that nothing saw get a TBV, which replaces them in T.
+// `hzb` is the paper's comparison: no TBVs, every dynamic object written in T
+// every frame (LCA update), then step 3.
+//
+// The PVS is every object whose box passed the frustum and the Z test. With
+// TBVe it is conservative: a TBV holds its object for its whole validity
+// period, so a TBV hidden under the pyramid hides its object, and a box that
+// passes the pyramid's test at the oracle's resolution keeps every object with
+// a pixel in the oracle's image (tests/culling/hzb_tbv/). TBVi may show an
+// object coming into view one frame late (section 3.6; TbvManager's header says
+// when).
+//
+// Departures from the paper, and why:
+// - The octree holds each entry in the one smallest node containing its box
+//   (dynamic_octree.h says why), and the traversal tests a node's box against
+//   the pyramid before its entries, as Greene's hierarchical z-buffer does.
+// - The z-buffer is the project's software rasterizer, not a GPU's: the oracle
+//   samples the same pixel centres, so the culler's image is the oracle's image
+//   of the objects drawn so far, and a test that fails is a defect, not a
+//   difference between two rasterizers.
+// - The pyramid is refreshed over each drawn object's rectangle (Greene's
+//   propagation of a depth change up the pyramid), then queried at the level
+//   where a box covers at most 2 x 2 texels (z_pyramid.h).
+// - A TBV with a non-finite size (an object with no speed bound) is never made:
+//   such an object stays in V, updated every frame.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "culling/api/culler.h"
+#include "culling/hzb_tbv/dynamic_octree.h"
+#include "culling/hzb_tbv/hzb_tbv_options.h"
+#include "culling/hzb_tbv/z_pyramid.h"
+#include "culling/raster/id_depth_buffer.h"
+#include "culling/raster/screen_mapping.h"
+#include "culling/tbv/tbv_manager.h"
+
+namespace gridcull {
+
+class HzbTbvCuller final : public Culler {
+public:
+    // use_tbvs false: `hzb` (mode is then unused).
+    HzbTbvCuller(std::string name, bool use_tbvs, TbvUpdateMode mode, const HzbTbvOptions& options,
+                 int reference_resolution);
+    const char* name() const override { return name_.c_str(); }
+    void reset(const Scene& scene) override;
+    void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+
+    // For tests and the window: the structures as the last frame left them.
+    const DynamicOctree& octree() const { return octree_; }
+    const ZPyramid& pyramid() const { return pyramid_; }
+    const TbvManager& tbvs() const { return tbv_; }
+
+private:
+    // The object's box at the frame's time.
+    Aabb currentBox(int index) const;
+    // Frustum and Z-pyramid test of a box (one occlusion test).
+    bool boxMayBeVisible(const Aabb& box);
+    // Writes the object at its current box in T (insert, or LCA update).
+    void writeInOctree(int index, const Aabb& box);
+    // Step 3 at one entry of a node.
+    void visitEntry(int index);
+    // Tests the object on its current box; if it may be visible, draws it,
+    // refreshes the pyramid under it and adds it to the PVS.
+    void testAndDraw(int index);
+    // Step 4's TBV for the object, from now for `validity` seconds.
+    TbvShape makeTbv(int index, double validity);
+
+    std::string name_;
+    bool use_tbvs_;
+    TbvUpdateMode mode_;
+    HzbTbvOptions options_;
+    int resolution_;
+
+    const Scene* scene_ = nullptr;
+    double t_ = 0.0;
+    int64_t frame_ = 0;
+    bool ready_ = false;
+    std::vector<double> max_speed_;
+    std::vector<double> bound_radius_;
+    std::vector<int> dynamic_;
+    std::vector<int64_t> tested_stamp_;  // the frame the object was last tested in
+    std::vector<double> key_times_;      // one keyframed object's key times (swept TBVs)
+    std::vector<int> reveals_;           // step 3's revealed objects, to rewrite in T after it
+
+    DynamicOctree octree_;
+    IdDepthBuffer buffer_;
+    ScreenMapping mapping_;
+    ZPyramid pyramid_;
+    TbvManager tbv_;
+
+    FrameResult* out_ = nullptr;
+    const Camera* camera_ = nullptr;
+};
+
+}  // namespace gridcull

@@ -1,0 +1,60 @@
+// ZPyramid::refresh, the propagation of each drawn object's depths up the
+// pyramid that the hzb cullers do after every draw: after any sequence of
+// draws and refreshes over the draws' rectangles, every level equals a pyramid
+// built from scratch over the whole buffer.
+#include <gtest/gtest.h>
+
+#include "culling/hzb_tbv/z_pyramid.h"
+#include "culling/raster/id_depth_buffer.h"
+#include "culling/scene/seeded_random.h"
+#include "tests/common/oracle_test_scenes.h"
+
+namespace gridcull {
+namespace {
+
+void expectSamePyramid(const ZPyramid& a, const ZPyramid& b, uint64_t seed, int draw) {
+    ASSERT_EQ(a.levelCount(), b.levelCount());
+    for (int l = 0; l < a.levelCount(); ++l) {
+        const ZPyramidLevel la = a.level(l), lb = b.level(l);
+        for (int y = 0; y < la.height; ++y)
+            for (int x = 0; x < la.width; ++x)
+                ASSERT_EQ(la.at(x, y), lb.at(x, y)) << "seed " << seed << " draw " << draw
+                                                    << " level " << l << " texel " << x << "," << y;
+    }
+}
+
+TEST(ZPyramidRefresh, DrawByDrawEqualsAFullBuild) {
+    for (uint64_t seed = 1; seed <= 40; ++seed) {
+        SeededRandom rng(seed);
+        Camera camera;
+        camera.position = {rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0), -30.0};
+        camera.target = {0, 0, 0};
+        camera.fov_deg = rng.uniform(30.0, 100.0);
+        camera.aspect = rng.uniform(0.3, 3.0);
+        int w = 0, h = 0;
+        imageSizeForAspect(1 + int(rng.below(200)), camera.aspect, w, h);
+        IdDepthBuffer buffer;
+        buffer.resize(w, h);
+        buffer.begin(camera);
+        ZPyramid incremental, full;
+        incremental.build(buffer);
+        for (int draw = 0; draw < 30; ++draw) {
+            const glm::dvec3 c{rng.uniform(-20.0, 20.0), rng.uniform(-20.0, 20.0),
+                               rng.uniform(-25.0, 40.0)};
+            bool drawn;
+            if (rng.uniform() < 0.5) {
+                drawn = buffer.drawSphere(draw, c, rng.uniform(0.1, 8.0));
+            } else {
+                const glm::dvec3 half{rng.uniform(0.1, 6.0), rng.uniform(0.1, 6.0),
+                                      rng.uniform(0.1, 6.0)};
+                drawn = buffer.drawBox(draw, Aabb{c - half, c + half});
+            }
+            if (drawn) incremental.refresh(buffer, buffer.lastDrawCols(), buffer.lastDrawRows());
+            full.build(buffer);
+            expectSamePyramid(incremental, full, seed, draw);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace gridcull
