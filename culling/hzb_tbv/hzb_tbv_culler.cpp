@@ -93,7 +93,8 @@ Aabb HzbTbvCuller::currentBox(int index) const {
 bool HzbTbvCuller::boxMayBeVisible(const Aabb& box) {
     if (!boxMayIntersectFrustum(box, *camera_)) return false;
     out_->stats.add(Counter::OcclusionTests, 1);
-    return pyramid_.boxMayBeVisible(mapping_.project(box));
+    const BoxOnScreen s = mapping_.project(box);
+    return pyramid_.queryRefined(s.rect, s.znear, kHzbQueryReads).may_be_visible;
 }
 
 void HzbTbvCuller::writeInOctree(int index, const Aabb& box) {
@@ -122,20 +123,7 @@ void HzbTbvCuller::testAndDraw(int index) {
     const SceneObject& object = scene_->objects[size_t(index)];
     const glm::dvec3 shift =
         object.isDynamic() ? scene_->displacementAt(object, t_) : glm::dvec3(0.0);
-    bool drawn = false;
-    switch (object.shape) {
-        case ShapeKind::Sphere:
-            drawn = buffer_.drawSphere(index, object.center + shift, object.radius);
-            break;
-        case ShapeKind::Box:
-            drawn = buffer_.drawBox(index, object.box.translated(shift));
-            break;
-        case ShapeKind::Mesh:
-            if (object.mesh) drawn = buffer_.drawMesh(index, *object.mesh, object.center + shift);
-            break;
-        case ShapeKind::Polygon:
-            break;  // 2D only; this family runs on 3D scenes
-    }
+    const bool drawn = buffer_.drawObject(index, object, shift);
     if (drawn) pyramid_.refresh(buffer_, buffer_.lastDrawCols(), buffer_.lastDrawRows());
     out_->pvs.push_back(object.id);
     if (use_tbvs_ && object.isDynamic()) tbv_.observe(index);

@@ -40,10 +40,9 @@
 //   of the objects drawn so far, and a test that fails is a defect, not a
 //   difference between two rasterizers.
 // - The pyramid is refreshed over each drawn object's rectangle (Greene's
-//   propagation of a depth change up the pyramid), then queried at the level
-//   where a box covers at most 2 x 2 texels (z_pyramid.h).
-// - A TBV with a non-finite size (an object with no speed bound) is never made:
-//   such an object stays in V, updated every frame.
+//   propagation of a depth change up the pyramid), and queried from the level
+//   where a box covers at most 2 x 2 texels down, as Greene descends, within
+//   kHzbQueryReads texels a query (z_pyramid.h).
 #pragma once
 #include <cstdint>
 #include <string>

@@ -13,6 +13,11 @@ constexpr int kMinHzbResolution = 16;
 constexpr double kMinHzbValidity = 0.001;
 constexpr double kMaxHzbValidity = 86400.0;
 
+// Texels one Z query may read as it descends the pyramid (Greene's refinement):
+// enough to settle a box at the edge of an occluder, few enough that a query
+// never costs more than a small draw.
+constexpr int kHzbQueryReads = 64;
+
 enum class HzbTbvShapeChoice { Sphere = 0, Box = 1, Swept = 2 };
 
 struct HzbTbvOptions {

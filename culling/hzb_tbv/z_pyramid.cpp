@@ -129,4 +129,46 @@ ZQueryResult ZPyramid::query(const PixelRect& rect, double znear) const {
     return result;
 }
 
+ZQueryResult ZPyramid::queryRefined(const PixelRect& rect, double znear, int max_reads) const {
+    ZQueryResult result;
+    if (levels_.empty()) return result;
+    const PixelRect r = rect.intersect({0, 0, width() - 1, height() - 1});
+    if (r.empty()) {
+        result.may_be_visible = false;
+        return result;
+    }
+    result.level = queryLevel(r);
+    // Depth-first over the texels still undecided; each entry's four children
+    // go on the stack, so it never holds more than 3 per level plus 4.
+    struct Texel {
+        int level, x, y;
+    };
+    constexpr int kStack = 4 + 3 * 32;
+    Texel stack[kStack];
+    int top = 0;
+    const int l0 = result.level;
+    for (int y = r.y1 >> l0; y >= r.y0 >> l0; --y)
+        for (int x = r.x1 >> l0; x >= r.x0 >> l0; --x) stack[top++] = {l0, x, y};
+    while (top > 0) {
+        const Texel t = stack[--top];
+        if (result.texels_read >= max_reads) return result;  // out of budget: visible
+        ++result.texels_read;
+        if (level(t.level).at(t.x, t.y) < znear) continue;  // hides its part
+        if (t.level == 0) return result;                    // a pixel that may see it
+        const int l = t.level - 1;
+        const ZPyramidLevel below = level(l);
+        for (int dy = 1; dy >= 0; --dy)
+            for (int dx = 1; dx >= 0; --dx) {
+                const int x = 2 * t.x + dx, y = 2 * t.y + dy;
+                if (x >= below.width || y >= below.height) continue;
+                // Only the children whose footprint meets the rectangle.
+                if ((x + 1) << l <= r.x0 || x << l > r.x1 || (y + 1) << l <= r.y0 || y << l > r.y1)
+                    continue;
+                stack[top++] = {l, x, y};
+            }
+    }
+    result.may_be_visible = false;
+    return result;
+}
+
 }  // namespace gridcull

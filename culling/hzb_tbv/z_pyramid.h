@@ -29,11 +29,11 @@
 // pixel of the rectangle is nearer than znear: the query is conservative.
 //
 // Departures from the paper, and why:
-// - The query reads one level's 2 x 2 texels (at most 4 reads, O(1)) and stops,
+// - query() reads one level's 2 x 2 texels (at most 4 reads, O(1)) and stops,
 //   instead of Greene's descent from the level where one texel covers the
 //   projection into the four texels below whenever that texel cannot decide.
 //   Still conservative; it culls less where the rectangle's 2 x 2 block reaches
-//   beyond the occluder. The culler can always refine by reading lower levels.
+//   beyond the occluder. queryRefined() descends, within a budget of reads.
 // - build() makes the pyramid from a whole z-buffer; refresh() then follows
 //   the culler's drawing object by object, over each object's rectangle (as
 //   Greene propagates each change up the pyramid), not primitive by primitive.
@@ -98,6 +98,14 @@ public:
     bool boxMayBeVisible(const BoxOnScreen& box) const {
         return query(box.rect, box.znear).may_be_visible;
     }
+
+    // The same query, refined as Greene's hierarchical z-buffer descends: each
+    // texel read that cannot hide the box (not strictly nearer than znear) is
+    // replaced by its texels one level down that meet the rectangle, until
+    // level 0 or until `max_reads` texels have been read (then: visible). Hidden
+    // only when every texel it ends on is nearer, so as conservative as query()
+    // and never culling less. O(max_reads); allocates nothing.
+    ZQueryResult queryRefined(const PixelRect& rect, double znear, int max_reads) const;
 
     // The lowest level at which rect's texel range is at most 2 x 2 (rect inside
     // the image, not empty).

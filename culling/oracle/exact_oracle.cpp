@@ -76,22 +76,7 @@ void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, Fra
     for (const auto& [key, i] : order_) {
         const SceneObject& object = scene.objects[size_t(i)];
         const glm::dvec3& shift = shifts_[size_t(i)];
-        bool drawn = false;
-        switch (object.shape) {
-            case ShapeKind::Sphere:
-                drawn = id_buffer_.drawSphere(i, object.center + shift, object.radius);
-                break;
-            case ShapeKind::Box:
-                drawn = id_buffer_.drawBox(i, object.box.translated(shift));
-                break;
-            case ShapeKind::Mesh:
-                if (object.mesh)
-                    drawn = id_buffer_.drawMesh(i, *object.mesh, object.center + shift);
-                break;
-            case ShapeKind::Polygon:
-                break;  // 2D only
-        }
-        tested += drawn ? 1 : 0;
+        tested += id_buffer_.drawObject(i, object, shift) ? 1 : 0;
     }
     id_buffer_.markVisible(seen_);
     out.stats.set(Counter::ObjectsTested, tested);

@@ -272,4 +272,18 @@ void IdDepthBuffer::markVisible(std::vector<char>& seen) const {
     }
 }
 
+bool IdDepthBuffer::drawObject(int index, const SceneObject& object, const glm::dvec3& shift) {
+    switch (object.shape) {
+        case ShapeKind::Sphere:
+            return drawSphere(index, object.center + shift, object.radius);
+        case ShapeKind::Box:
+            return drawBox(index, object.box.translated(shift));
+        case ShapeKind::Mesh:
+            return object.mesh && drawMesh(index, *object.mesh, object.center + shift);
+        case ShapeKind::Polygon:
+            break;  // 2D only
+    }
+    return false;
+}
+
 }  // namespace gridcull

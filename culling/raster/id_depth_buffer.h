@@ -88,6 +88,10 @@ public:
     // center plus its displacement).
     bool drawMesh(int index, const TriangleMesh& mesh, const glm::dvec3& offset);
 
+    // The scene object moved by `shift`, by its shape (a polygon, 2D only, draws
+    // nothing and returns false).
+    bool drawObject(int index, const SceneObject& object, const glm::dvec3& shift);
+
     // Sets seen[index] = 1 for every index left in the buffer; seen must be large
     // enough for every index drawn. O(pixels).
     void markVisible(std::vector<char>& seen) const;

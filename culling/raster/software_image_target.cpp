@@ -39,21 +39,7 @@ void SoftwareImageTarget::begin(const Camera& camera, int width, int height, boo
 
 bool SoftwareImageTarget::draw(const SceneObject& object, int index, const glm::dvec3& shift,
                                const PixelRect& /*image_area*/, PixelRect& written) {
-    bool drawn = false;
-    switch (object.shape) {
-        case ShapeKind::Sphere:
-            drawn = zbuffer_.drawSphere(index, object.center + shift, object.radius);
-            break;
-        case ShapeKind::Box:
-            drawn = zbuffer_.drawBox(index, object.box.translated(shift));
-            break;
-        case ShapeKind::Mesh:
-            if (object.mesh) drawn = zbuffer_.drawMesh(index, *object.mesh, object.center + shift);
-            break;
-        case ShapeKind::Polygon:
-            break;  // 2D only
-    }
-    if (!drawn) return false;
+    if (!zbuffer_.drawObject(index, object, shift)) return false;
     const ScreenRange cols = zbuffer_.lastDrawCols(), rows = zbuffer_.lastDrawRows();
     written = {cols.lo, rows.lo, cols.hi, rows.hi};
     if (occlusion_bits_) obuffer_.markDrawn(zbuffer_, written);
