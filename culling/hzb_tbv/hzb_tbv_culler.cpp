@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "culling/baseline/frustum_tests.h"
 #include "culling/scene/motion_bounds.h"
@@ -163,7 +164,9 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
     buffer_.resize(width, height);
     buffer_.begin(camera);
     mapping_.set(camera, width, height);
-    pyramid_.build(buffer_);
+    // The buffer starts empty (+infinity), and so does the pyramid.
+    pyramid_.resize(width, height);
+    pyramid_.clear();
 
     // Steps 1 and 2.
     if (use_tbvs_) {

@@ -59,6 +59,10 @@ void ZPyramid::build(int width, int height, const double* depths) {
     reduceAll();
 }
 
+void ZPyramid::clear() {
+    std::fill(texels_.begin(), texels_.end(), kEmpty);
+}
+
 void ZPyramid::reduceAll() {
     for (int l = 0; l + 1 < levelCount(); ++l) {
         const Level above = levels_[size_t(l) + 1];

@@ -77,6 +77,8 @@ public:
     void build(const IdDepthBuffer& buffer);
     // The same from width * height row-major depths (top row first).
     void build(int width, int height, const double* depths);
+    // Every texel +infinity: the pyramid of a cleared buffer, without reading it.
+    void clear();
     // Copies the buffer's depths over columns `cols` and rows `rows` (level-0
     // pixels, clipped to the image) into level 0 and recomputes, on every level
     // above, the texels whose footprint meets them: Greene's propagation of a

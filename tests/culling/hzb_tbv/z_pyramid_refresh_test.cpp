@@ -37,7 +37,9 @@ TEST(ZPyramidRefresh, DrawByDrawEqualsAFullBuild) {
         buffer.resize(w, h);
         buffer.begin(camera);
         ZPyramid incremental, full;
-        incremental.build(buffer);
+        // As the culler starts a frame: a cleared pyramid for a cleared buffer.
+        incremental.resize(w, h);
+        incremental.clear();
         for (int draw = 0; draw < 30; ++draw) {
             const glm::dvec3 c{rng.uniform(-20.0, 20.0), rng.uniform(-20.0, 20.0),
                                rng.uniform(-25.0, 40.0)};
