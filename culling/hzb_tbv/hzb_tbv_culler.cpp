@@ -103,6 +103,10 @@ void HzbTbvCuller::writeInOctree(int index, const Aabb& box) {
         octree_.update(index, box);
     else
         octree_.insert(index, box);
+}
+
+void HzbTbvCuller::writeObject(int index) {
+    writeInOctree(index, currentBox(index));
     out_->stats.add(Counter::ObjectUpdates, 1);
 }
 
@@ -170,13 +174,20 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
 
     // Steps 1 and 2.
     if (use_tbvs_) {
-        tbv_.beginFrame(t, [&](int index, TbvDropReason) { octree_.remove(index); });
+        tbv_.beginFrame(t, [&](int index, TbvDropReason) {
+            // TBVe: step 2 writes the object in its TBV's place with the rest of
+            // V. TBVi writes it now (see the header: its one-frame bound needs it).
+            if (mode_ == TbvUpdateMode::Implicit) {
+                tbv_.updVis(index);
+                writeObject(index);
+            }
+        });
         for (const int index : tbv_.objectsToUpdate()) {
             tbv_.updVis(index);
-            writeInOctree(index, currentBox(index));
+            writeObject(index);
         }
     } else {
-        for (const int index : dynamic_) writeInOctree(index, currentBox(index));
+        for (const int index : dynamic_) writeObject(index);
     }
 
     // Step 3. Objects outside the world sit at the root, whose box does not
@@ -193,7 +204,7 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
     });
     out.stats.set(Counter::NodesVisited, nodes);
     // The revealed objects replace their TBVs in T.
-    for (const int index : reveals_) writeInOctree(index, currentBox(index));
+    for (const int index : reveals_) writeObject(index);
 
     // Step 4.
     if (use_tbvs_) {
@@ -213,7 +224,7 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
         out.stats.set(Counter::StateFetches, int64_t(dynamic_.size()));
         out.stats.set(Counter::TbvMessages, 0);
     }
-    out.stats.add(Counter::ObjectUpdates, 0);
+    out.stats.add(Counter::ObjectUpdates, 0);  // reported, 0 or more
     std::sort(out.pvs.begin(), out.pvs.end());
 }
 

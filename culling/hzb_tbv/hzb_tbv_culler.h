@@ -23,6 +23,16 @@
 // `hzb` is the paper's comparison: no TBVs, every dynamic object written in T
 // every frame (LCA update), then step 3.
 //
+// TBVi here writes an object whose TBV ends in step 1 (expired, violated, or
+// invalidated at random) in T at once, where the paper leaves it out of T
+// until its step-4 TBV is revealed. The paper's bound, "omitted for at most
+// one frame", assumes that step-4 TBV outlives the next step 1; one made with
+// a period of one frame (the adaptive floor) can expire at the next frame's
+// time by rounding, and a period under a frame (--hzb-validity) or a random
+// invalidation (--hzb-invalidate) ends it there for sure, losing the object
+// for two frames or for good. With the write, TBVi is late only for an object
+// that moved out of the nodes it was written in while in view: one frame.
+//
 // The PVS is every object whose box passed the frustum and the Z test. With
 // TBVe it is conservative: a TBV holds its object for its whole validity
 // period, so a TBV hidden under the pyramid hides its object, and a box that
@@ -77,8 +87,10 @@ private:
     Aabb currentBox(int index) const;
     // Frustum and Z-pyramid test of a box (one occlusion test).
     bool boxMayBeVisible(const Aabb& box);
-    // Writes the object at its current box in T (insert, or LCA update).
+    // Puts `box` in T for the entry `index` (insert, or LCA update).
     void writeInOctree(int index, const Aabb& box);
+    // Writes the object at its current box in T (an object update).
+    void writeObject(int index);
     // Step 3 at one entry of a node.
     void visitEntry(int index);
     // Tests the object on its current box; if it may be visible, draws it,

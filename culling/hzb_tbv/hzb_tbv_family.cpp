@@ -12,8 +12,9 @@ const KnobTable<HzbTbvOptions>& hzbTbvKnobs() {
     static const KnobTable<HzbTbvOptions> table{
         derivedKnob("hzb-res", &HzbTbvOptions::resolution, kMinHzbResolution, kMaxImageResolution,
                     "oracle", "the --oracle-res value",
-                    "pixels on the long side of the z-buffer and its Z-pyramid; below the "
-                    "oracle's, an object seen only between their pixel centres may be dropped"),
+                    "pixels on the long side of the z-buffer and its Z-pyramid; another value "
+                    "than the oracle's samples other pixel centres, so an object the oracle "
+                    "sees through a gap may be dropped"),
         knob("hzb-validity", &HzbTbvOptions::validity_s, kMinHzbValidity, kMaxHzbValidity,
              "seconds a TBV stays valid (the first period when adaptive); longer: fewer "
              "expiries, bigger TBVs revealed sooner"),
@@ -25,7 +26,7 @@ const KnobTable<HzbTbvOptions>& hzbTbvKnobs() {
              "swept box of a keyframed path (others get spheres)"),
         knob("hzb-invalidate", &HzbTbvOptions::invalidate_fraction, 0.0, 1.0,
              "fraction of the valid TBVs dropped each frame, as fuzzy TBVs whose motion bound "
-             "was broken (the paper's Fig. 14); costs updates, never correctness"),
+             "was broken (the paper's Fig. 14); costs object updates, not correctness"),
         knob("hzb-octree-depth", &HzbTbvOptions::octree_depth, 0, kMaxHzbOctreeDepth,
              "the octree's maximum depth; deeper: tighter nodes to test, more nodes to walk"),
     };
@@ -39,8 +40,7 @@ FamilyEntry hzbTbvFamily() {
     family.algorithms = {
         {"hzb-tbv", kRuns3d, "octree + hierarchical z-buffer, TBVs, explicit update (TBVe)"},
         {"hzb-tbvi", kRuns3d,
-         "the same, implicit update (TBVi): an object coming into view may show a frame late",
-         1},
+         "the same, implicit update (TBVi): an object coming into view may show a frame late", 1},
         {"hzb", kRuns3d, "octree + hierarchical z-buffer, every moving object updated every frame"},
     };
     family.knobs = hzbTbvKnobs().knobs();

@@ -64,7 +64,7 @@ struct ZPyramidLevel {
 struct ZQueryResult {
     bool may_be_visible = true;
     int level = -1;       // the level read; -1 when none was
-    int texels_read = 0;  // <= 4
+    int texels_read = 0;  // query(): <= 4; queryRefined(): <= its max_reads
 };
 
 class ZPyramid {

@@ -156,7 +156,7 @@ bool IdDepthBuffer::drawSphere(int index, const glm::dvec3& center, double radiu
         cols = pixelRange(columnOf(u_lo), columnOf(u_hi), width_);
     }
     if (rows.empty() || cols.empty()) return false;
-    if (!mayBeNearer(cols, rows, z_min)) return true;  // hidden whole
+    if (!mayBeNearer(cols, rows, z_min)) return hiddenWhole();
 
     // Per row v the ray (u, v, 1) meets the sphere's line set where
     // qa u^2 + 2 qb u + qc >= 0. With qa < 0 (always so in front of the eye
@@ -237,7 +237,7 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
     const ScreenRange cols = pixelRange(columnOf(u_lo), columnOf(u_hi), width_);
     const ScreenRange rows = pixelRange(rowOf(v_hi), rowOf(v_lo), height_);
     if (cols.empty() || rows.empty()) return false;
-    if (!mayBeNearer(cols, rows, std::max(z_min, near_))) return true;  // hidden whole
+    if (!mayBeNearer(cols, rows, std::max(z_min, near_))) return hiddenWhole();
     boxPixels(index, box, std::max(z_min, near_), cols.lo, cols.hi, rows.lo, rows.hi);
     refreshTiles();
     return true;

@@ -113,6 +113,11 @@ private:
     double columnOf(double u) const;  // continuous pixel column of slope u
     double rowOf(double v) const;     // continuous pixel row of slope v
     void fillNear(int index);         // the whole screen at depth near: the camera is inside
+    // A draw whose every pixel is already nearer: accepted, nothing written.
+    bool hiddenWhole() {
+        last_cols_ = last_rows_ = ScreenRange{};
+        return true;
+    }
     // Writes the ray-box / ray-sphere solution per pixel over rows [row_lo, row_hi]
     // and columns [col_lo, col_hi].
     void boxPixels(int index, const Aabb& box, double z_min, int col_lo, int col_hi, int row_lo,

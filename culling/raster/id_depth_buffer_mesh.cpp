@@ -69,6 +69,10 @@ bool IdDepthBuffer::drawMesh(int index, const TriangleMesh& mesh, const glm::dve
         markAllDirty();
         refreshTiles();
     }
+    // The near-plane pass above may have written anywhere; the triangles below
+    // only their bounds. The draw's rectangle is both.
+    const ScreenRange near_cols = last_cols_, near_rows = last_rows_;
+    const bool near_pass = mesh.closed && z_min <= near_ && z_max >= near_;
     glm::dvec3 tri[3];
     for (size_t t = 0; t < triangles; ++t) {
         triangle(t, tri);
@@ -76,6 +80,17 @@ bool IdDepthBuffer::drawMesh(int index, const TriangleMesh& mesh, const glm::dve
         clipAndRaster(index, tri, false);
     }
     refreshTiles();
+    if (near_pass && !near_cols.empty() && !near_rows.empty()) {
+        if (last_cols_.empty() || last_rows_.empty()) {
+            last_cols_ = near_cols;
+            last_rows_ = near_rows;
+        } else {
+            last_cols_ = {std::min(last_cols_.lo, near_cols.lo),
+                          std::max(last_cols_.hi, near_cols.hi)};
+            last_rows_ = {std::min(last_rows_.lo, near_rows.lo),
+                          std::max(last_rows_.hi, near_rows.hi)};
+        }
+    }
     return true;
 }
 

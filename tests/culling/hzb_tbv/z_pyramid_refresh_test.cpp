@@ -1,7 +1,9 @@
 // ZPyramid::refresh, the propagation of each drawn object's depths up the
 // pyramid that the hzb cullers do after every draw: after any sequence of
-// draws and refreshes over the draws' rectangles, every level equals a pyramid
-// built from scratch over the whole buffer.
+// draws (spheres, boxes, meshes, closed meshes that the near plane cuts) and
+// refreshes over the draws' rectangles, every level equals a pyramid built
+// from scratch over the whole buffer. So each draw's rectangle holds every
+// pixel it wrote.
 #include <gtest/gtest.h>
 
 #include "culling/hzb_tbv/z_pyramid.h"
@@ -44,7 +46,17 @@ TEST(ZPyramidRefresh, DrawByDrawEqualsAFullBuild) {
             const glm::dvec3 c{rng.uniform(-20.0, 20.0), rng.uniform(-20.0, 20.0),
                                rng.uniform(-25.0, 40.0)};
             bool drawn;
-            if (rng.uniform() < 0.5) {
+            const double kind = rng.uniform();
+            if (kind < 0.15) {
+                // A closed mesh around or just in front of the eye: the near plane
+                // cuts it and the solid fills pixels at depth near.
+                const glm::dvec3 at =
+                    camera.position + glm::dvec3{rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0),
+                                                 rng.uniform(-1.0, 3.0)};
+                drawn = buffer.drawMesh(draw, *test::cubeMesh(rng.uniform(0.5, 3.0)), at);
+            } else if (kind < 0.3) {
+                drawn = buffer.drawMesh(draw, *test::tetrahedronMesh(rng.uniform(1.0, 9.0)), c);
+            } else if (kind < 0.65) {
                 drawn = buffer.drawSphere(draw, c, rng.uniform(0.1, 8.0));
             } else {
                 const glm::dvec3 half{rng.uniform(0.1, 6.0), rng.uniform(0.1, 6.0),
