@@ -9,7 +9,7 @@ namespace gridcull {
 // largest image (kMaxImageResolution) sees in a world of any size we load.
 constexpr int kMaxHzbOctreeDepth = 12;
 constexpr int kMinHzbResolution = 16;
-// As rgvc's: under a millisecond or over a day means nothing in a scene of frames.
+// Under a millisecond or over a day means nothing in a scene of frames.
 constexpr double kMinHzbValidity = 0.001;
 constexpr double kMaxHzbValidity = 86400.0;
 

@@ -5,7 +5,7 @@
 // the cost of hidden objects is paid when their TBVs expire, not every frame.
 //
 // One entry per object at most: schedule() replaces the object's earlier entry
-// and cancel() drops it, both in O(log n) (a binary heap with lazy deletion: a
+// and cancel() drops it, both in O(log n) (a binary heap with deferred deletion: a
 // replaced entry stays in the heap, marked stale by a generation count, until it
 // surfaces or the heap is compacted). Compaction runs when stale entries would
 // outgrow the capacity reserved by reset(), so a steady state allocates nothing.

@@ -77,7 +77,7 @@
 //    addDynamic() are.
 //  - "Time of last observation" is kept as the frame number of the last
 //    observe(): frames go in order, and an integer compares exactly.
-//  - Q is a binary heap with lazy deletion (TbvExpiryQueue) instead of a skip
+//  - Q is a binary heap with deferred deletion (TbvExpiryQueue) instead of a skip
 //    list: O(log i) per insertion and per cancellation, no allocation after
 //    reset(). A TBV expires in the first frame whose time is past its expiry
 //    (expiry < t), so a TBV is trusted for its whole validity period.
