@@ -32,7 +32,7 @@ int runBench(const BenchCommand& c);
 
 // `shot` and `view` share the window's options.
 struct WindowCommand {
-    std::string scene, algo = kDefaultAlgorithm, out, view = "main";
+    std::string scene, algo = defaultAlgorithm(), out, view = "main";
     long long frame = 0, width = 1280, height = 720, exit_after = 0;
     bool play = false;
     KnobOptions knobs;

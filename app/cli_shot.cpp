@@ -17,7 +17,7 @@ void addWindowOptions(CLI::App& cmd, WindowCommand& c) {
     cmd.add_option("--algo", c.algo,
                    std::string("the algorithm whose PVS colours the objects, listed below; "
                                "default ") +
-                       kDefaultAlgorithm +
+                       defaultAlgorithm() +
                        ", which `gridcull` alone opens with, for view and shot alike so that a "
                        "shot pictures what the window shows (--algo vfc: a picture no occlusion "
                        "culler's changes move)")

@@ -183,8 +183,8 @@ void Debugger::openSceneFile(const std::string& path) {
     std::string note;
     if (!algorithmFits(algo, *loaded.scene, why)) {
         std::string unused;
-        algo = algorithmFits(kDefaultAlgorithm, *loaded.scene, unused) ? kDefaultAlgorithm
-                                                                       : kLastResortAlgorithm;
+        algo = algorithmFits(defaultAlgorithm(), *loaded.scene, unused) ? defaultAlgorithm()
+                                                                        : lastResortAlgorithm();
         note = why + "; switched to " + algo;
     }
     if (!session_.open(std::move(*loaded.scene), path, algo, error)) {

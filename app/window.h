@@ -5,20 +5,13 @@
 #include <string>
 
 #include "culling/api/knobs.h"
+#include "culling/registry/registry.h"
 #include "culling/scene/scene.h"
 
 namespace gridcull {
 
-// The culler the window (`gridcull` alone, `view`) and `shot` start with:
-// regular-grid culling, which runs on 2D and 3D scenes and shows the most (its
-// matrices, traversal and occluders). The window also falls back to it when a
-// newly opened scene does not fit the selected culler (to vfc when it does not
-// fit either).
-constexpr const char* kDefaultAlgorithm = "rgvc";
-constexpr const char* kLastResortAlgorithm = "vfc";
-
 struct ViewOptions {
-    std::string algo = kDefaultAlgorithm;  // the culler whose PVS colours the objects
+    std::string algo = defaultAlgorithm();  // the culler whose PVS colours the objects
     int width = 1280;                      // window / image size in pixels
     int height = 720;
     int frame = 0;              // first frame shown (shot: the frame drawn)

@@ -40,6 +40,9 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
      "in a distributed virtual environment)"},
     {Counter::TbvMessages, "tbv_messages",
      "temporal bounding volumes requested from the objects' controllers (one message each)"},
+    {Counter::OctreeUpdateNodes, "octree_update_nodes",
+     "octree nodes read, made or freed while moving objects and TBVs in the octree (the "
+     "work the update under the least common ancestor saves)"},
 }};
 
 constexpr bool inCounterOrder() {

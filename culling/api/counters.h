@@ -38,6 +38,7 @@ enum class Counter : uint8_t {
     ProbabilitySkips,
     StateFetches,
     TbvMessages,
+    OctreeUpdateNodes,
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

@@ -99,10 +99,15 @@ bool HzbTbvCuller::boxMayBeVisible(const Aabb& box) {
 }
 
 void HzbTbvCuller::writeInOctree(int index, const Aabb& box) {
-    if (octree_.contains(index))
-        octree_.update(index, box);
+    OctreeOpCost cost;
+    if (!octree_.contains(index))
+        cost = octree_.insert(index, box);
+    else if (options_.octree_update_from_root)
+        cost = octree_.updateFromRoot(index, box);
     else
-        octree_.insert(index, box);
+        cost = octree_.update(index, box);
+    out_->stats.add(Counter::OctreeUpdateNodes,
+                    int64_t(cost.nodes_visited) + cost.nodes_created + cost.nodes_freed);
 }
 
 void HzbTbvCuller::writeObject(int index) {
@@ -224,7 +229,8 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
         out.stats.set(Counter::StateFetches, int64_t(dynamic_.size()));
         out.stats.set(Counter::TbvMessages, 0);
     }
-    out.stats.add(Counter::ObjectUpdates, 0);  // reported, 0 or more
+    out.stats.add(Counter::ObjectUpdates, 0);       // reported, 0 or more
+    out.stats.add(Counter::OctreeUpdateNodes, 0);  // likewise
     std::sort(out.pvs.begin(), out.pvs.end());
 }
 

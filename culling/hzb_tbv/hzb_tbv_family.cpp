@@ -29,6 +29,10 @@ const KnobTable<HzbTbvOptions>& hzbTbvKnobs() {
              "was broken (the paper's Fig. 14); costs object updates, not correctness"),
         knob("hzb-octree-depth", &HzbTbvOptions::octree_depth, 0, kMaxHzbOctreeDepth,
              "the octree's maximum depth; deeper: tighter nodes to test, more nodes to walk"),
+        knob("hzb-octree-update", &HzbTbvOptions::octree_update_from_root, 0, 1,
+             "0: a moved object or TBV is updated under the least common ancestor of its old "
+             "and new boxes; 1: deleted and reinserted from the root (the paper's comparison; "
+             "same octree, more nodes visited)"),
     };
     return table;
 }

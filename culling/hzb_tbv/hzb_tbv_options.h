@@ -39,6 +39,10 @@ struct HzbTbvOptions {
     double invalidate_fraction = 0.0;
     // The octree's maximum depth (the root is 0).
     int octree_depth = 8;
+    // How an entry moves in the octree: 0 under the least common ancestor of
+    // its old and new boxes (section 4, Fig. 9); 1 deleted from the root and
+    // inserted from the root (Fig. 5), the paper's comparison.
+    int octree_update_from_root = 0;
 };
 
 const KnobTable<HzbTbvOptions>& hzbTbvKnobs();

@@ -15,6 +15,12 @@ std::vector<FamilyEntry> builtInFamilies() {
     return {baselineFamily(), oracleFamily(), rgvcFamily(), lazyGridFamily(), hzbTbvFamily()};
 }
 
+// The window starts with regular-grid culling: it runs on 2D and 3D scenes and
+// shows the most (its matrices, traversal and occluders). View-frustum culling
+// runs on every scene.
+const std::string kDefaultAlgorithm = "rgvc";
+const std::string kLastResortAlgorithm = "vfc";
+
 struct Table {
     std::vector<FamilyEntry> families = builtInFamilies();
     size_t built_in = families.size();
@@ -165,6 +171,14 @@ const std::string& referenceAlgorithm() {
         if (f.reference) return f.algorithms.front().name;
     static const std::string none;
     return none;
+}
+
+const std::string& defaultAlgorithm() {
+    return kDefaultAlgorithm;
+}
+
+const std::string& lastResortAlgorithm() {
+    return kLastResortAlgorithm;
 }
 
 int referenceResolution(const KnobValues& knobs) {

@@ -50,6 +50,12 @@ const FamilyEntry* familyOfKnob(std::string_view flag);
 // The reference algorithm (the exact oracle, "exact"): the first algorithm of
 // the family marked `reference`.
 const std::string& referenceAlgorithm();
+// The algorithm the window (`gridcull` alone, `view`) and `shot` start with,
+// and the window's fallback when a newly opened scene does not fit the
+// selected one; and the last resort when the scene does not fit that either
+// (an algorithm that runs on every scene). Both are registered algorithms.
+const std::string& defaultAlgorithm();
+const std::string& lastResortAlgorithm();
 
 // The oracle's image side for these values: what image-space families match by
 // default (CullerRequest::reference_resolution).

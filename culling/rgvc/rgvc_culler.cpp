@@ -55,7 +55,6 @@ void RgvcCuller::reset(const Scene& scene) {
     inner_boxes_.assign(n, nullptr);
     pvs_stamp_.assign(n, 0);
     rejected_stamp_.assign(n, 0);
-    discretized_stamp_.assign(n, 0);
     tbv_.assign(n, Tbv{});
     // Each TBV's node list keeps the capacity it grew (reused by a reset on the
     // same scene).
@@ -63,14 +62,19 @@ void RgvcCuller::reset(const Scene& scene) {
     for (std::vector<uint64_t>& nodes : tbv_nodes_) nodes.clear();
     tbv_seen_.assign(n, 0);
     tbv_test_ = 0;
-    expiry_queue_.reset(n);
-    validity_.reset(n, options_.adaptive_validity ? TbvValidityMode::Adaptive : TbvValidityMode::Fixed,
-                    options_.validity_s, scene.dt);
+    // Spread periods (spreadValidity) so that TBVs made together do not
+    // expire together; adaptive ones never below one frame.
+    TbvManagerOptions tbv;
+    tbv.mode = TbvUpdateMode::Explicit;
+    tbv.validity_mode =
+        options_.adaptive_validity ? TbvValidityMode::Adaptive : TbvValidityMode::Fixed;
+    tbv.initial_validity = options_.validity_s;
+    tbv.validity_floor = scene.dt;
+    tbv.spread_validity = true;
+    tbvs_.reset(n, tbv);
+    renewals_.clear();
+    renewals_.reserve(n);
     edge_tbvs_.clear();
-    discretized_.clear();
-    last_discretized_.clear();
-    discretized_.reserve(n);
-    last_discretized_.reserve(n);
     has_static_ = has_dynamic_ = false;
     mesh_interiors_.clear();
     for (size_t i = 0; i < n; ++i) {
@@ -85,6 +89,7 @@ void RgvcCuller::reset(const Scene& scene) {
         reach_in_grid_[i] = in;
         if (object.isDynamic()) {
             dynamic_.push_back(int(i));
+            tbvs_.addDynamic(int(i));
             has_dynamic_ = true;
         } else {
             has_static_ = true;
@@ -142,8 +147,7 @@ void RgvcCuller::reset(const Scene& scene) {
     if (dimensions_ == 3) {
         tbv_xz_.resize(w, d, false, 1, true);
         tbv_yz_.resize(h, d, false, 1, true);
-        direction_map_.resize(
-            RgvcDirectionMap::resolutionFor(std::max({w, h, d})));
+        direction_map_.resize(RgvcDirectionMap::resolutionFor(std::max({w, h, d})));
         direction_pass_ = direction_map_.restartPasses();
         layer_occluders_.reserve(size_t(w) * size_t(h) + size_t(h) * size_t(d) +
                                  size_t(w) * size_t(d));
@@ -165,6 +169,9 @@ void RgvcCuller::addToPvs(int index) {
     }
     pvs_stamp_[size_t(index)] = frame_;
     out_->pvs.push_back(index);
+    // Seen: stays in V. (An object under a TBV joins the PVS only when the
+    // traversal is replaced by the frustum alone; its TBV stays.)
+    if (tbvs_.isDynamic(index) && tbvs_.inV(index)) tbvs_.observe(index);
 }
 
 void RgvcCuller::setUpFrame2d(const Camera& camera, bool& unreachable, bool& teleported) {
@@ -182,9 +189,11 @@ void RgvcCuller::setUpFrame2d(const Camera& camera, bool& unreachable, bool& tel
     const glm::dvec3& o = grid_.world.min;
     auto cell = [](double u, int hi) { return int(std::clamp(std::floor(u), -1.0, double(hi))); };
     clip_x0_ = std::max(0, cell((x0 - o.x) / voxel_size_.x, grid_.resolution.x));
-    clip_x1_ = std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
+    clip_x1_ =
+        std::min(grid_.resolution.x - 1, cell((x1 - o.x) / voxel_size_.x, grid_.resolution.x));
     clip_y0_ = std::max(0, cell((y0 - o.y) / voxel_size_.y, grid_.resolution.y));
-    clip_y1_ = std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
+    clip_y1_ =
+        std::min(grid_.resolution.y - 1, cell((y1 - o.y) / voxel_size_.y, grid_.resolution.y));
 }
 
 void RgvcCuller::setUpFrame3d(const Camera& camera, bool& unreachable, bool& teleported) {
@@ -194,8 +203,8 @@ void RgvcCuller::setUpFrame3d(const Camera& camera, bool& unreachable, bool& tel
     unreachable = false;
     for (int a = 0; a < 3; ++a) unreachable = unreachable || std::abs(v[a]) >= 900000000;
     const glm::i64vec3 step = viewer3_ - last_viewer3_;
-    teleported = frame_ > 1 && std::max({std::llabs(step.x), std::llabs(step.y),
-                                         std::llabs(step.z)}) > 1;
+    teleported =
+        frame_ > 1 && std::max({std::llabs(step.x), std::llabs(step.y), std::llabs(step.z)}) > 1;
     const glm::dvec3 fwd = camera.forward();
     line_of_sight3_ = BresenhamLine3::towards(fwd.x / voxel_size_.x, fwd.y / voxel_size_.y,
                                               fwd.z / voxel_size_.z);
@@ -225,7 +234,7 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     out_ = &out;
     camera_ = &camera;
     scene_ = &scene;
-    voxels_visited_ = tbv_created_ = tbv_expired_ = tbv_revealed_ = object_updates_ = 0;
+    voxels_visited_ = object_updates_ = 0;
     bool unreachable = false, teleported = false;
     if (dimensions_ == 2)
         setUpFrame2d(camera, unreachable, teleported);
@@ -257,12 +266,17 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         traverse3d(scene);
     }
 
+    // Criterion 1 (the manager's step 4): the objects of V that left the PVS
+    // get a TBV, against this frame's viewer voxel.
+    tbvs_.endFrame([&](int index, double& validity) { return makeTbv(scene, index, validity); });
+
     for (int& entry : out.pvs) entry = scene.objects[size_t(entry)].id;
     std::sort(out.pvs.begin(), out.pvs.end());
+    const TbvFrameCounters& c = tbvs_.frameCounters();
     out.stats.set(Counter::VoxelsVisited, voxels_visited_);
-    out.stats.set(Counter::TbvCreated, tbv_created_);
-    out.stats.set(Counter::TbvExpired, tbv_expired_);
-    out.stats.set(Counter::TbvRevealed, tbv_revealed_);
+    out.stats.set(Counter::TbvCreated, c.tbv_created);
+    out.stats.set(Counter::TbvExpired, c.tbv_expired);
+    out.stats.set(Counter::TbvRevealed, c.tbv_revealed);
     out.stats.set(Counter::ObjectUpdates, object_updates_);
 
     last_viewer_ = viewer_;
@@ -272,7 +286,7 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     if (snapshot_enabled_) {
         snapshot_.tbv_list.clear();
         for (const int index : dynamic_)
-            if (tbv_[size_t(index)].active) snapshot_.tbv_list.push_back(tbvView(scene, index));
+            if (hasTbv(index)) snapshot_.tbv_list.push_back(tbvView(scene, index));
     }
     out_ = nullptr;
     camera_ = nullptr;
@@ -334,8 +348,9 @@ RgvcTbvView RgvcCuller::tbvView(const Scene& scene, int index) const {
     view.object_id = scene.objects[size_t(index)].id;
     view.centre = b.centre;
     view.radius = b.radius;
-    view.created = b.created;
-    view.expiry = b.expiry;
+    const TbvRecord& record = tbvs_.tbv(index);
+    view.created = record.created;
+    view.expiry = record.expiry;
     view.curve_centre = b.curve.centre;
     view.curve_radius = b.curve.radius;
     view.filled = b.filled;

@@ -9,11 +9,12 @@
 //  1. Scene discretization (s4.1, s4.5, s5.1; rgvc_discretize*.cpp): O <- Os;
 //     every dynamic object in the last frame's PVS (all of them in the first
 //     frame) is written into O (voxels wholly inside it; in 3D inside its inner
-//     model) and I (voxels it touches); an object that left the PVS gets a TBV in
-//     T; TBVs whose validity ran out (popped from the expiration queue,
-//     culling/tbv/tbv_expiry_queue.h) are renewed. Static objects went into Os
-//     and I once, in reset(). Hidden objects cost nothing in frames where their
-//     TBV neither expires nor is revealed.
+//     model) and I (voxels it touches); TBVs whose validity ran out are renewed.
+//     Static objects went into Os and I once, in reset(). Hidden objects cost
+//     nothing in frames where their TBV neither expires nor is revealed. The
+//     TBVs' bookkeeping (state, validity, expiry, the expiration queue, V) is
+//     the shared TBV manager's (culling/tbv/tbv_manager.h); rgvc_tbv_life.cpp
+//     writes TBVs into T and takes them out.
 //  2. View-frustum traversal (s4.2, s5.2; rgvc_traversal*.cpp): chess layers
 //     around the viewer's voxel in increasing distance from the seed voxels of
 //     the Bresenham line of sight (2D: rings walked in the paper's two
@@ -63,13 +64,21 @@
 //  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), adaptive by
 //    default (Sudarsky & Gotsman, s3.4; culling/tbv/tbv_validity.h) so that a
 //    period too long for the scene corrects itself instead of having its TBV
-//    revealed every frame, spread (spreadValidity) so that TBVs made together
-//    do not expire together,
-//    and shortened (as the paper suggests) so that the TBV
+//    revealed every frame, spread (spreadValidity, never below one frame) so
+//    that TBVs made together do not expire together, and shortened (as the
+//    paper suggests) so that the TBV
 //    leaves the viewer's voxel outside; when even one frame's validity would
 //    not, the TBV is written filled. When the viewer's voxel jumps by more than
 //    one voxel between frames (a teleport), every boundary TBV that may enclose
 //    the new viewer voxel is revealed before the traversal.
+//  - The paper gives an object that left the PVS its TBV in the next frame's
+//    step 1 (criterion 1); here it gets it at the end of the frame it left
+//    (Sudarsky & Gotsman's step 4, the TBV manager's endFrame), at the same
+//    time t and against that frame's viewer voxel. The next frame's viewer
+//    moves from that voxel, so the boundary argument (an 8-connected walk
+//    crosses a 4-connected curve on one of its voxels) and the teleport rule
+//    hold as before; T then shows, after a frame, the TBVs the next frame
+//    starts with.
 //  - A revealed object whose voxels the traversal had already passed
 //    non-occluded joins the PVS at once (the traversal will not come back).
 //  - Time going backwards, or a scene with a different object count, resets.
@@ -99,8 +108,7 @@
 #include "culling/rgvc/rgvc_options.h"
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/rgvc/rgvc_tbv.h"
-#include "culling/tbv/tbv_expiry_queue.h"
-#include "culling/tbv/tbv_validity.h"
+#include "culling/tbv/tbv_manager.h"
 #include "grid/bit_matrix.h"
 #include "grid/bresenham.h"
 #include "grid/bresenham3d.h"
@@ -128,32 +136,30 @@ public:
     RgvcMatrixMemory memory() const;
 
 private:
+    // How the TBV lies in T (its validity, expiry and state are the TBV
+    // manager's).
     struct Tbv {
-        bool active = false;
         bool edge = false;    // not in T: revealed when it touches the frustum
         bool filled = false;  // written filled rather than as its boundary
         glm::dvec3 centre{0.0};
         double radius = 0.0;  // 2D: the disc's; 3D: the cube's half side
         Aabb box;             // 3D: the cube cut to the object's reach (world)
-        double created = 0.0;
-        double expiry = 0.0;
         RgvcTbvCurve curve;   // 2D
         RgvcVoxelBox cells;   // the voxels the TBV may cover (3D) / its clip box (2D)
         int edge_slot = -1;   // index in edge_tbvs_
-        uint32_t serial = 0;  // TBVs made for this object so far
     };
 
     // rgvc_discretize.cpp (s4.1, s4.5) and rgvc_discretize3d.cpp (s5.1)
     void discretizeStatic(const Scene& scene);
     void discretizeObject(const Scene& scene, int index, bool during_traversal);
-    void rasterize2d(const SceneObject& object, const glm::dvec3& shift, int index,
-                     bool is_static, bool during_traversal);
-    void rasterize3d(const SceneObject& object, const glm::dvec3& shift, int index,
-                     bool is_static, bool during_traversal);
+    void rasterize2d(const SceneObject& object, const glm::dvec3& shift, int index, bool is_static,
+                     bool during_traversal);
+    void rasterize3d(const SceneObject& object, const glm::dvec3& shift, int index, bool is_static,
+                     bool during_traversal);
     bool objectTouchesFrustum(const Scene& scene, int index) const;
     // rgvc_tbv_life.cpp: the TBVs' life cycle (s4.1, s5.2)
-    void createTbv(const Scene& scene, int index);
-    void removeTbv(int index);
+    TbvShape makeTbv(const Scene& scene, int index, double& validity);
+    bool hasTbv(int index) const { return tbvs_.hasTbv(index); }
     void revealTbv(const Scene& scene, int index, bool during_traversal);
     void writeTbv(int index, bool add);
     bool tbvMayEncloseViewer(const Tbv& b) const;
@@ -201,9 +207,9 @@ private:
     // the traversal reads a dense bitmap, not a list head, for an empty voxel.
     BitMatrix holds_static_;
     BitMatrix holds_dynamic_;
-    IdListMatrix tbv_matrix_;           // T (2D), Txy (3D)
-    IdListMatrix tbv_xz_;               // Txz (3D)
-    IdListMatrix tbv_yz_;               // Tyz (3D)
+    IdListMatrix tbv_matrix_;  // T (2D), Txy (3D)
+    IdListMatrix tbv_xz_;      // Txz (3D)
+    IdListMatrix tbv_yz_;      // Tyz (3D)
     bool has_static_ = false;
     bool has_dynamic_ = false;
 
@@ -219,12 +225,12 @@ private:
     std::vector<int64_t> rejected_stamp_;  // == frame_ once found outside the frustum
     std::vector<Tbv> tbv_;
     std::vector<std::vector<uint64_t>> tbv_nodes_;  // per object: (plane << 32 | node) in T
-    TbvExpiryQueue expiry_queue_;
-    TbvValidityPeriods validity_;
-    std::vector<int> edge_tbvs_;         // object indices with edge TBVs
-    std::vector<int> discretized_;       // dynamic objects written into O and I this frame
-    std::vector<int> last_discretized_;  // ... and in the last frame
-    std::vector<int64_t> discretized_stamp_;  // == frame_ once in discretized_
+    // D, Q and V of Sudarsky & Gotsman: each dynamic object's TBV state,
+    // validity period and expiry, the expiration queue, and the objects written
+    // into O and I (V: those in the last PVS, and those revealed this frame).
+    TbvManager tbvs_;
+    std::vector<int> renewals_;   // this frame's expired TBVs, renewed after step 1
+    std::vector<int> edge_tbvs_;  // object indices with edge TBVs
     std::vector<int> reveal_scratch_;
     std::vector<uint32_t> tbv_seen_;  // 3D 2-of-3 test: per object, the last test that saw it
     uint32_t tbv_test_ = 0;
@@ -247,15 +253,12 @@ private:
     glm::i64vec3 clip_lo3_{0}, clip_hi3_{-1};  // frustum voxel box cut to the grid
     bool eye_in_grid_ = false;
     std::vector<glm::ivec3> layer_occluders_;  // the current layer's new occluders
-    bool direction_covered_ = false;  // the direction map holds a covered cell this frame
-    uint32_t direction_pass_ = 0;     // numbers the layers' passes over the map, across frames
+    bool direction_covered_ = false;           // the direction map holds a covered cell this frame
+    uint32_t direction_pass_ = 0;  // numbers the layers' passes over the map, across frames
     const Camera* camera_ = nullptr;
     const Scene* scene_ = nullptr;
     // Counters of the frame.
     int64_t voxels_visited_ = 0;
-    int64_t tbv_created_ = 0;
-    int64_t tbv_expired_ = 0;
-    int64_t tbv_revealed_ = 0;
     int64_t object_updates_ = 0;
     // Per layer, while traversing.
     int64_t current_layer_ = -1;  // -1 before the traversal

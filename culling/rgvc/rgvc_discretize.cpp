@@ -91,10 +91,6 @@ void RgvcCuller::discretizeObject(const Scene& scene, int index, bool during_tra
     const SceneObject& object = scene.objects[size_t(index)];
     const glm::dvec3 shift = scene.displacementAt(object, t_);
     ++object_updates_;
-    if (discretized_stamp_[size_t(index)] != frame_) {
-        discretized_stamp_[size_t(index)] = frame_;
-        discretized_.push_back(index);
-    }
     if (dimensions_ == 2)
         rasterize2d(object, shift, index, false, during_traversal);
     else

@@ -1,10 +1,12 @@
 // The life cycle of regular-grid culling's temporal bounding volumes (Batagelo &
 // Wu, sections 4.1 and 5.2, after Sudarsky & Gotsman): made when an object
-// leaves the PVS, renewed when its validity runs out (the expiration queue pops
-// it), dropped when the traversal reveals it. One implementation for both
-// dimensions; only the TBV's shape differs: a digital circle in T (2D,
-// rgvc_tbv.h), a box's projections in Txy, Txz and Tyz (3D, rgvc_tbv3d.h).
-// rgvc_culler.h says where this departs from the paper.
+// leaves the PVS, renewed when its validity runs out, dropped when the
+// traversal reveals it. The bookkeeping (each object's state, validity period
+// and expiry, the expiration queue, V) is the shared TBV manager's
+// (culling/tbv/tbv_manager.h); this file writes TBVs into T and takes them
+// out. One implementation for both dimensions; only the TBV's shape differs: a
+// digital circle in T (2D, rgvc_tbv.h), a box's projections in Txy, Txz and
+// Tyz (3D, rgvc_tbv3d.h). rgvc_culler.h says where this departs from the paper.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,7 +44,7 @@ bool RgvcCuller::tbvMayEncloseViewer(const Tbv& b) const {
     return b.cells.contains(viewer3_);
 }
 
-void RgvcCuller::createTbv(const Scene& scene, int index) {
+TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity) {
     const SceneObject& object = scene.objects[size_t(index)];
     Tbv& b = tbv_[size_t(index)];
     const double speed = max_speed_[size_t(index)];
@@ -51,9 +53,9 @@ void RgvcCuller::createTbv(const Scene& scene, int index) {
     // A hair of extra size so that rounding never leaves the object outside.
     const double scale = std::max({voxel_size_.x, voxel_size_.y, voxel_size_.z, base});
     const double pad = 1e-9 * scale;
-    double validity = speed > 0.0 ? spreadValidity(validity_.period(index), index, b.serial)
-                                  : std::numeric_limits<double>::infinity();
-    ++b.serial;
+    // The manager's period (spread, adapted); an object that cannot move keeps
+    // its TBV for ever.
+    if (!(speed > 0.0)) validity = std::numeric_limits<double>::infinity();
     b.centre = object.anchor + shift;
     // 2D: a disc around the anchor, cut to where the object can ever be. 3D:
     // the object's bounds now grown on every side (a cube of motion), cut so.
@@ -94,20 +96,23 @@ void RgvcCuller::createTbv(const Scene& scene, int index) {
         }
         b.filled = tbvMayEncloseViewer(b);
     }
-    b.active = true;
-    b.created = t_;
-    b.expiry = t_ + validity;
+    const glm::dvec3 g(b.radius);
+    const Aabb cube = intersect({now.min - g, now.max + g}, reach);
     if (dimensions_ == 2) {
         b.edge = !reach_in_grid_[size_t(index)] && !tbvCurveInsideGrid(grid_, b.curve);
     } else {
-        const glm::dvec3 g(b.radius);
-        b.edge = !reach_in_grid_[size_t(index)] &&
-                 !insideBox(intersect({now.min - g, now.max + g}, reach), grid_.world, 3);
-        b.box = intersect({now.min - g, now.max + g}, reach);
+        b.edge = !reach_in_grid_[size_t(index)] && !insideBox(cube, grid_.world, 3);
+        b.box = cube;
     }
-    ++tbv_created_;
-    if (std::isfinite(b.expiry)) expiry_queue_.schedule(index, b.expiry);
     writeTbv(index, true);
+    // What the manager keeps: the disc (2D) or the cut cube (3D) itself.
+    if (dimensions_ == 2) return sphereTbv(2, b.centre, b.radius, 0.0, 0.0);
+    TbvShape shape;
+    shape.kind = TbvShapeKind::Box;
+    shape.dimensions = 3;
+    shape.box = {cube.min, cube.max};
+    shape.centre = 0.5 * (cube.min + cube.max);
+    return shape;
 }
 
 void RgvcCuller::writeTbv(int index, bool add) {
@@ -130,18 +135,19 @@ void RgvcCuller::writeTbv(int index, bool add) {
     std::vector<uint64_t>& nodes = tbv_nodes_[size_t(index)];
     IdListMatrix* planes[3] = {&tbv_matrix_, &tbv_xz_, &tbv_yz_};
     if (!add) {
-        for (const uint64_t node : nodes) planes[node >> 32]->removeNode(int32_t(node & 0xffffffffu));
+        for (const uint64_t node : nodes)
+            planes[node >> 32]->removeNode(int32_t(node & 0xffffffffu));
         nodes.clear();
         return;
     }
     const int32_t id = int32_t(index);
     auto put = [&](int plane, int x, int y) {
-        nodes.push_back((uint64_t(plane) << 32) | uint64_t(uint32_t(planes[plane]->addNode(x, y, id))));
+        nodes.push_back((uint64_t(plane) << 32) |
+                        uint64_t(uint32_t(planes[plane]->addNode(x, y, id))));
     };
     if (dimensions_ == 3) {
-        forEachTbvProjectionCell(b.cells, b.filled, [&](TbvPlane plane, int a, int c) {
-            put(int(plane), a, c);
-        });
+        forEachTbvProjectionCell(b.cells, b.filled,
+                                 [&](TbvPlane plane, int a, int c) { put(int(plane), a, c); });
     } else if (b.filled) {
         forEachTbvFilledSpanClipped(b.curve, b.cells, [&](int y, int x0, int x1) {
             for (int x = x0; x <= x1; ++x) put(0, x, y);
@@ -151,58 +157,44 @@ void RgvcCuller::writeTbv(int index, bool add) {
     }
 }
 
-void RgvcCuller::removeTbv(int index) {
-    Tbv& b = tbv_[size_t(index)];
-    if (!b.active) return;
-    b.active = false;
-    expiry_queue_.cancel(index);
-    writeTbv(index, false);
-}
-
 void RgvcCuller::revealTbv(const Scene& scene, int index, bool during_traversal) {
-    const Tbv& b = tbv_[size_t(index)];
-    if (b.active) validity_.revealed(index, b.expiry - b.created);
-    if (snapshot_enabled_ && b.active)
+    if (!tbvs_.hasTbv(index)) return;
+    if (snapshot_enabled_)
         snapshot_.reveals.push_back(
             RgvcRevealView{during_traversal ? int32_t(current_layer_) : -1, tbvView(scene, index)});
-    removeTbv(index);
-    ++tbv_revealed_;
+    // del_TBV and upd_vis: the period halves, the object joins V and is
+    // written into O and I at once.
+    tbvs_.reveal(index);
+    writeTbv(index, false);
     discretizeObject(scene, index, during_traversal);
 }
 
 void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
-    // Every dynamic object is, each frame, either written into O and I or under
-    // an active TBV. Those written last frame are written again if they were in
-    // its PVS, else they get a TBV; the others are touched only when their TBV
-    // expires or is revealed.
-    last_discretized_.swap(discretized_);
-    discretized_.clear();
-    if (frame_ == 1) {
-        for (const int index : dynamic_) discretizeObject(scene, index, false);
-    } else {
-        for (const int index : last_discretized_) {
-            if (pvs_stamp_[size_t(index)] == frame_ - 1) {
-                removeTbv(index);
-                discretizeObject(scene, index, false);
-            } else if (!tbv_[size_t(index)].active) {
-                createTbv(scene, index);
-            }
-        }
-    }
-    // Still hidden, TBV expired: a new validity period from where it is now.
-    expiry_queue_.popExpired(t_, [&](int index) {
-        removeTbv(index);
-        ++tbv_expired_;
-        validity_.expired(index);
-        createTbv(scene, index);
+    // Every dynamic object is, each frame, either in V (written into O and I)
+    // or under a TBV. The last frame ended with V = the dynamic objects of its
+    // PVS (the others got TBVs then, criterion 1); the others are touched only
+    // when their TBV expires or is revealed.
+    renewals_.clear();
+    tbvs_.beginFrame(t_, [&](int index, TbvDropReason) {
+        writeTbv(index, false);
+        renewals_.push_back(index);
     });
+    // Criterion 2: still hidden, TBV expired: a new validity period from where
+    // the object is now, without looking at it (the paper's renewal; Sudarsky
+    // & Gotsman would write it into O and I and test it).
+    for (const int index : renewals_)
+        tbvs_.renew(index, [&](int i, double& validity) { return makeTbv(scene, i, validity); });
+    for (const int index : tbvs_.objectsToUpdate()) {
+        tbvs_.updVis(index);
+        discretizeObject(scene, index, false);
+    }
     if (teleported) {
         // The viewer's voxel jumped: it may have landed inside a boundary TBV
         // without stepping on its boundary. Rare, so a pass over all of them.
         for (const int index : dynamic_) {
+            if (!tbvs_.hasTbv(index)) continue;
             const Tbv& b = tbv_[size_t(index)];
-            if (b.active && !b.edge && !b.filled && tbvMayEncloseViewer(b))
-                revealTbv(scene, index, false);
+            if (!b.edge && !b.filled && tbvMayEncloseViewer(b)) revealTbv(scene, index, false);
         }
     }
     // TBVs of objects that can leave the grid: revealed when they touch the
@@ -211,8 +203,9 @@ void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
     for (size_t i = edge_tbvs_.size(); i-- > 0;) {
         const int index = edge_tbvs_[i];
         const Tbv& b = tbv_[size_t(index)];
-        const bool touches = dimensions_ == 2 ? circleMayIntersectWedge(b.centre, b.radius, *camera_)
-                                              : boxMayIntersectFrustum(b.box, *camera_);
+        const bool touches = dimensions_ == 2
+                                 ? circleMayIntersectWedge(b.centre, b.radius, *camera_)
+                                 : boxMayIntersectFrustum(b.box, *camera_);
         if (touches) revealTbv(scene, index, false);
     }
 }

@@ -201,7 +201,7 @@ void RgvcCuller::visitVoxel(const Scene& scene, int x, int y, int64_t k) {
         reveal_scratch_.clear();
         tbv_matrix_.forEach(x, y, [&](int32_t index) { reveal_scratch_.push_back(index); });
         for (const int index : reveal_scratch_)
-            if (tbv_[size_t(index)].active) revealTbv(scene, index, true);
+            if (hasTbv(index)) revealTbv(scene, index, true);
     }
     if (occluder_.get(x, y)) occludeFrom(x, y, k);
 }

@@ -243,7 +243,7 @@ void RgvcCuller::revealTbvsAt3d(const Scene& scene, int x, int y, int z) {
     // A visible TBV voxel: its objects may be visible; put them into O and I now
     // so that the rest of the traversal decides (s4.2).
     for (const int index : reveal_scratch_)
-        if (tbv_[size_t(index)].active) revealTbv(scene, index, true);
+        if (hasTbv(index)) revealTbv(scene, index, true);
 }
 
 bool RgvcCuller::blocksInLayer3d(int x, int y, int z) const {

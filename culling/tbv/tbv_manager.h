@@ -213,10 +213,18 @@ public:
     bool reveal(int object);
     // Step 4: every object of V not observed this frame leaves V, becomes
     // Hidden, and gets a TBV from make_tbv(object, validity&) -> TbvShape for
-    // `validity` seconds from now (the culler may shorten it, keeping it > 0; it
-    // takes the object out of T and puts the shape in). Ends the frame.
+    // `validity` seconds from now (the culler may shorten it, keeping it > 0,
+    // or make it +infinity for an object that cannot move; it takes the object
+    // out of T and puts the shape in). Ends the frame.
     template <typename MakeTbv>
     void endFrame(MakeTbv&& make_tbv);
+    // Renewal, for a culler that gives an object whose TBV just expired its
+    // next TBV at once instead of looking at it again (Batagelo & Wu's regular
+    // grid, section 4.1: "if TBV validity period is expired, a new validity
+    // period is attributed"): the object, in V, gets its TBV now, exactly as
+    // step 4 would give it (make_tbv as there), and leaves V. Inside a frame.
+    template <typename MakeTbv>
+    void renew(int object, MakeTbv&& make_tbv);
 
     // del_TBV: drops the object's TBV (which it must have) for `reason`: it
     // leaves Q, joins V, and its period adapts (section 3.4: doubled on Expired,
@@ -384,12 +392,20 @@ void TbvManager::endFrame(MakeTbv&& make_tbv) {
             state_[size_t(object)] = TbvObjectState::Visible;
             continue;
         }
-        double validity = nextValidity(object);
-        const TbvShape shape = make_tbv(object, validity);
-        makeTbv(object, shape, validity);
+        renew(object, make_tbv);
     }
     in_frame_ = false;
     accumulate(totals_, counters_);
+}
+
+template <typename MakeTbv>
+void TbvManager::renew(int object, MakeTbv&& make_tbv) {
+    assert(in_frame_ && "renew outside a frame");
+    assert(inV(object) && "renew of an object under a TBV");
+    touch(object);
+    double validity = nextValidity(object);
+    const TbvShape shape = make_tbv(object, validity);
+    makeTbv(object, shape, validity);
 }
 
 }  // namespace gridcull

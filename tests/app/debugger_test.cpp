@@ -59,11 +59,11 @@ TEST_F(DebuggerTest, OffersOnlyTheAlgorithmsOfTheScenesDimension) {
     // the culler it opens with.
     debugger.openSceneFile(test::sourcePath("scenes/walls-2d.json"));
     EXPECT_EQ(debugger.session().scene().dimensions, 2);
-    EXPECT_EQ(debugger.session().algo(), kDefaultAlgorithm);
+    EXPECT_EQ(debugger.session().algo(), defaultAlgorithm());
     EXPECT_NE(debugger.note().find("lazy-grid runs on 3D scenes only, and this scene is 2D"),
               std::string::npos)
         << debugger.note();
-    EXPECT_NE(debugger.note().find(std::string("switched to ") + kDefaultAlgorithm),
+    EXPECT_NE(debugger.note().find(std::string("switched to ") + defaultAlgorithm()),
               std::string::npos)
         << debugger.note();
     EXPECT_TRUE(offers(debugger, "rgvc"));

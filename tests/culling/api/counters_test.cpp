@@ -20,7 +20,7 @@ TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
         "object_updates", "pixel_queries",  "nodes_visited",    "triangles_drawn",
         "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
         "cell_updates",   "bvh_rebuilds",   "probability_skips", "state_fetches",
-        "tbv_messages"};
+        "tbv_messages",   "octree_update_nodes"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {

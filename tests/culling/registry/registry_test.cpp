@@ -113,6 +113,17 @@ TEST(Registry, TheReferenceResolutionIsTheOracles) {
     EXPECT_EQ(referenceResolution(knobs), 640);
 }
 
+// The window's start and fallbacks are registered algorithms; the default
+// runs on both dimensions and the last resort too, so a scene always gets one.
+TEST(Registry, TheDefaultAndLastResortAlgorithmsRunOnEveryDimension) {
+    for (const std::string& name : {defaultAlgorithm(), lastResortAlgorithm()}) {
+        const AlgorithmEntry* algorithm = nullptr;
+        ASSERT_NE(familyOfAlgorithm(name, &algorithm), nullptr) << name;
+        EXPECT_EQ(algorithm->dimensions, kRunsBoth) << name;
+    }
+    EXPECT_NE(defaultAlgorithm(), referenceAlgorithm());
+}
+
 TEST(Registry, OnlyFamiliesThatDrawAnImageTakeATarget) {
     std::string error;
     struct NoTarget : ImageTarget {

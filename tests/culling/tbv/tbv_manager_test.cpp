@@ -177,6 +177,47 @@ TEST(TbvManager, InfiniteValidityIsNeverQueued) {
     EXPECT_EQ(m.totals().state_fetches, 1);
 }
 
+// Renewal (the regular grid's way with an expired TBV): in the frame its TBV
+// expires, the object gets its next one at once, with the doubled period, and
+// is neither written in T (no state fetch, no object update) nor left in V.
+TEST(TbvManager, RenewGivesAnExpiredObjectItsNextTbvAtOnce) {
+    TbvManager m;
+    TbvManagerOptions o;
+    o.validity_mode = TbvValidityMode::Adaptive;
+    o.initial_validity = 1.0;
+    m.reset(1, o);
+    m.addDynamic(0);
+    auto hidden = [](int, double& validity) {
+        return sphereTbv(3, glm::dvec3(-10.0, 0.0, 0.0), 1.0, 1.0, validity);
+    };
+    m.beginFrame(0.0, [](int, TbvDropReason) {});
+    for (const int id : m.objectsToUpdate()) m.updVis(id);
+    m.endFrame(hidden);  // not observed: a TBV of 1 s
+    ASSERT_TRUE(m.hasTbv(0));
+    EXPECT_EQ(m.tbv(0).expiry, 1.0);
+
+    std::vector<int> expired;
+    m.beginFrame(1.5, [&](int id, TbvDropReason why) {
+        EXPECT_EQ(why, TbvDropReason::Expired);
+        expired.push_back(id);
+    });
+    ASSERT_EQ(expired, std::vector<int>{0});
+    EXPECT_TRUE(m.inV(0));
+    for (const int id : expired) m.renew(id, hidden);
+    EXPECT_TRUE(m.hasTbv(0));
+    EXPECT_FALSE(m.inV(0));
+    EXPECT_TRUE(m.objectsToUpdate().empty());
+    EXPECT_EQ(m.tbv(0).created, 1.5);
+    EXPECT_EQ(m.tbv(0).expiry, 3.5);  // the period doubled on the expiry
+    EXPECT_EQ(m.state(0), TbvObjectState::Hidden);
+    EXPECT_TRUE(m.consistent());
+    m.endFrame(hidden);
+    EXPECT_EQ(m.frameCounters().tbv_expired, 1);
+    EXPECT_EQ(m.frameCounters().tbv_created, 1);
+    EXPECT_EQ(m.frameCounters().state_fetches, 0);
+    EXPECT_EQ(m.frameCounters().object_updates, 0);
+}
+
 // "Hot per-frame paths allocate nothing after reset()": frames with every kind
 // of event (expiries, reveals, violations, random invalidations, adaptive and
 // spread periods, both update modes) make no allocation, counted by
