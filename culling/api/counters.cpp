@@ -10,7 +10,8 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
     {Counter::TbvCreated, "tbv_created",
      "temporal bounding volumes made for hidden moving objects"},
     {Counter::TbvExpired, "tbv_expired",
-     "temporal bounding volumes whose validity ran out (the object is looked at again)"},
+     "temporal bounding volumes whose validity ran out (the object is looked at again, or given "
+     "its next TBV at once)"},
     {Counter::TbvRevealed, "tbv_revealed",
      "temporal bounding volumes found visible before they expired"},
     {Counter::ObjectUpdates, "object_updates",

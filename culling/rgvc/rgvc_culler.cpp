@@ -74,6 +74,8 @@ void RgvcCuller::reset(const Scene& scene) {
     tbvs_.reset(n, tbv);
     renewals_.clear();
     renewals_.reserve(n);
+    unwritten_.clear();
+    unwritten_.reserve(n);
     edge_tbvs_.clear();
     has_static_ = has_dynamic_ = false;
     mesh_interiors_.clear();
@@ -266,9 +268,20 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
         traverse3d(scene);
     }
 
+    // The snapshot's TBVs are T as the traversal saw it.
+    if (snapshot_enabled_) {
+        snapshot_.tbv_list.clear();
+        for (const int index : dynamic_)
+            if (hasTbv(index)) snapshot_.tbv_list.push_back(tbvView(scene, index));
+    }
     // Criterion 1 (the manager's step 4): the objects of V that left the PVS
-    // get a TBV, against this frame's viewer voxel.
-    tbvs_.endFrame([&](int index, double& validity) { return makeTbv(scene, index, validity); });
+    // get a TBV, against this frame's viewer voxel; T gets them at the next
+    // frame's start.
+    tbvs_.endFrame([&](int index, double& validity) {
+        const TbvShape shape = makeTbv(scene, index, validity, false);
+        unwritten_.push_back(index);
+        return shape;
+    });
 
     for (int& entry : out.pvs) entry = scene.objects[size_t(entry)].id;
     std::sort(out.pvs.begin(), out.pvs.end());
@@ -283,11 +296,6 @@ void RgvcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameR
     last_viewer3_ = viewer3_;
     last_t_ = t;
     snapshot_.memory = memory();
-    if (snapshot_enabled_) {
-        snapshot_.tbv_list.clear();
-        for (const int index : dynamic_)
-            if (hasTbv(index)) snapshot_.tbv_list.push_back(tbvView(scene, index));
-    }
     out_ = nullptr;
     camera_ = nullptr;
     scene_ = nullptr;

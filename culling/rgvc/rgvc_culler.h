@@ -74,11 +74,11 @@
 //  - The paper gives an object that left the PVS its TBV in the next frame's
 //    step 1 (criterion 1); here it gets it at the end of the frame it left
 //    (Sudarsky & Gotsman's step 4, the TBV manager's endFrame), at the same
-//    time t and against that frame's viewer voxel. The next frame's viewer
-//    moves from that voxel, so the boundary argument (an 8-connected walk
-//    crosses a 4-connected curve on one of its voxels) and the teleport rule
-//    hold as before; T then shows, after a frame, the TBVs the next frame
-//    starts with.
+//    time t and against that frame's viewer voxel; it is written into T at
+//    the next frame's start, as in the paper, so that T after a frame is T as
+//    its traversal saw it. The next frame's viewer moves from that voxel, so
+//    the boundary argument (an 8-connected walk crosses a 4-connected curve on
+//    one of its voxels) and the teleport rule hold as before.
 //  - A revealed object whose voxels the traversal had already passed
 //    non-occluded joins the PVS at once (the traversal will not come back).
 //  - Time going backwards, or a scene with a different object count, resets.
@@ -158,7 +158,9 @@ private:
                      bool during_traversal);
     bool objectTouchesFrustum(const Scene& scene, int index) const;
     // rgvc_tbv_life.cpp: the TBVs' life cycle (s4.1, s5.2)
-    TbvShape makeTbv(const Scene& scene, int index, double& validity);
+    // The object's TBV for `validity` seconds from now (may shorten it), written
+    // into T now or (write false) left to the next frame's start.
+    TbvShape makeTbv(const Scene& scene, int index, double& validity, bool write);
     bool hasTbv(int index) const { return tbvs_.hasTbv(index); }
     void revealTbv(const Scene& scene, int index, bool during_traversal);
     void writeTbv(int index, bool add);
@@ -230,6 +232,7 @@ private:
     // into O and I (V: those in the last PVS, and those revealed this frame).
     TbvManager tbvs_;
     std::vector<int> renewals_;   // this frame's expired TBVs, renewed after step 1
+    std::vector<int> unwritten_;  // TBVs made at the last frame's end, not yet in T
     std::vector<int> edge_tbvs_;  // object indices with edge TBVs
     std::vector<int> reveal_scratch_;
     std::vector<uint32_t> tbv_seen_;  // 3D 2-of-3 test: per object, the last test that saw it

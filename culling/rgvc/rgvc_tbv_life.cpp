@@ -44,7 +44,7 @@ bool RgvcCuller::tbvMayEncloseViewer(const Tbv& b) const {
     return b.cells.contains(viewer3_);
 }
 
-TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity) {
+TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity, bool write) {
     const SceneObject& object = scene.objects[size_t(index)];
     Tbv& b = tbv_[size_t(index)];
     const double speed = max_speed_[size_t(index)];
@@ -104,7 +104,7 @@ TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity) {
         b.edge = !reach_in_grid_[size_t(index)] && !insideBox(cube, grid_.world, 3);
         b.box = cube;
     }
-    writeTbv(index, true);
+    if (write) writeTbv(index, true);
     // What the manager keeps: the disc (2D) or the cut cube (3D) itself.
     if (dimensions_ == 2) return sphereTbv(2, b.centre, b.radius, 0.0, 0.0);
     TbvShape shape;
@@ -174,6 +174,9 @@ void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
     // or under a TBV. The last frame ended with V = the dynamic objects of its
     // PVS (the others got TBVs then, criterion 1); the others are touched only
     // when their TBV expires or is revealed.
+    // The TBVs the last frame made go into T first: this frame may drop them.
+    for (const int index : unwritten_) writeTbv(index, true);
+    unwritten_.clear();
     renewals_.clear();
     tbvs_.beginFrame(t_, [&](int index, TbvDropReason) {
         writeTbv(index, false);
@@ -183,7 +186,8 @@ void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
     // the object is now, without looking at it (the paper's renewal; Sudarsky
     // & Gotsman would write it into O and I and test it).
     for (const int index : renewals_)
-        tbvs_.renew(index, [&](int i, double& validity) { return makeTbv(scene, i, validity); });
+        tbvs_.renew(index,
+                    [&](int i, double& validity) { return makeTbv(scene, i, validity, true); });
     for (const int index : tbvs_.objectsToUpdate()) {
         tbvs_.updVis(index);
         discretizeObject(scene, index, false);
