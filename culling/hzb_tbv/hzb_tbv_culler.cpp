@@ -37,6 +37,7 @@ HzbTbvCuller::HzbTbvCuller(std::string name, bool use_tbvs, TbvUpdateMode mode,
 
 void HzbTbvCuller::reset(const Scene& scene) {
     frame_ = 0;
+    snapshot_.valid = false;
     ready_ = scene.dimensions == 3;
     if (!ready_) return;
     const size_t n = scene.objects.size();
@@ -60,8 +61,14 @@ void HzbTbvCuller::reset(const Scene& scene) {
     key_times_.reserve(keys);
     buffer_.reserveMeshVertices(mesh_vertices);
 
+    // The root is the cube on the world's longest side, as the paper's octree
+    // subdivides a cube: the world's own box, flat in a building, would halve
+    // its height at every level, and every object taller than half the world
+    // (a wall) would stay at the root.
     OctreeParams params;
-    params.bounds = scene.grid.world;
+    const glm::dvec3 extent = scene.grid.world.extent();
+    const double side = std::max({extent.x, extent.y, extent.z});
+    params.bounds = {scene.grid.world.min, scene.grid.world.min + glm::dvec3(side)};
     params.max_depth = std::clamp(options_.octree_depth, 0, kMaxHzbOctreeDepth);
     octree_.reset(params);
     // Every object and its TBV share one entry, so n entries; nodes: a path of
@@ -162,6 +169,7 @@ TbvShape HzbTbvCuller::makeTbv(int index, double validity) {
 void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
     out.pvs.clear();
     out.stats = CullStats{};
+    snapshot_.valid = false;
     if (!ready_) return;
     ++frame_;
     scene_ = &scene;
@@ -200,10 +208,17 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
     reveals_.clear();
     const bool root_holds_outside = octree_.outsideCount() > 0;
     int64_t nodes = 0;
+    if (capture_) {
+        snapshot_.nodes.clear();
+        snapshot_.nodes.reserve(size_t(octree_.poolSize()));
+        snapshot_.node_count = {};
+    }
     octree_.traverseFrontToBack(camera.position, [&](const OctreeNodeView& node) {
         ++nodes;
         const bool unbounded = node.id == DynamicOctree::kRoot && root_holds_outside;
-        if (!unbounded && !boxMayBeVisible(node.box)) return false;
+        const bool enter = unbounded || boxMayBeVisible(node.box);
+        if (capture_) captureNode(node, enter);
+        if (!enter) return false;
         for (const int index : node.objects) visitEntry(index);
         return true;
     });
@@ -232,6 +247,119 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
     out.stats.add(Counter::ObjectUpdates, 0);       // reported, 0 or more
     out.stats.add(Counter::OctreeUpdateNodes, 0);  // likewise
     std::sort(out.pvs.begin(), out.pvs.end());
+    if (capture_) fillSnapshot(out);
+}
+
+// --- Debug capture (hzb_tbv_snapshot.h): reads the structures, changes nothing
+// the culling depends on.
+
+void HzbTbvCuller::captureNode(const OctreeNodeView& node, bool entered) {
+    HzbNodeVisit visit;
+    visit.box = node.box;
+    visit.node = node.id;
+    visit.depth = node.depth;
+    visit.entries = node.objects.size();
+    // boxMayBeVisible tests the frustum first; asking it again apart (a pure
+    // test, no counter) tells which of the two skipped the node.
+    visit.outcome = entered                                      ? HzbNodeOutcome::Entered
+                    : boxMayIntersectFrustum(node.box, *camera_) ? HzbNodeOutcome::ZCulled
+                                                                 : HzbNodeOutcome::FrustumCulled;
+    ++snapshot_.node_count[size_t(visit.outcome)];
+    snapshot_.nodes.push_back(visit);  // reserved for the pool's size
+}
+
+void HzbTbvCuller::fillSnapshot(const FrameResult& out) {
+    HzbTbvSnapshot& s = snapshot_;
+    s.valid = true;
+    s.uses_tbvs = use_tbvs_;
+    s.mode = mode_;
+    s.frame = frame_;
+    s.t = t_;
+
+    // D.
+    s.slot_of_object.assign(scene_->objects.size(), -1);
+    s.objects.clear();
+    s.objects.reserve(dynamic_.size());
+    s.status_count = {};
+    for (const int index : dynamic_) {
+        HzbTbvObject o;
+        o.object_index = index;
+        o.object_id = scene_->objects[size_t(index)].id;
+        o.in_pvs = std::binary_search(out.pvs.begin(), out.pvs.end(), o.object_id);
+        const TbvObjectView v = tbv_.view(index);
+        o.state = v.state;
+        o.period = v.period;
+        if (!use_tbvs_) {
+            o.status = o.in_pvs ? HzbObjectStatus::Visible : HzbObjectStatus::Culled;
+        } else {
+            if (v.has_tbv) {
+                o.has_tbv = true;
+                o.tbv = toAabb(tbv_.bounds(index));
+                o.created = v.created;
+                o.expiry = v.expiry;
+                o.remaining = v.remaining;
+                o.new_tbv = v.created == t_;
+            }
+            o.status = v.has_tbv ? HzbObjectStatus::Hidden : HzbObjectStatus::Visible;
+            // A TBV ends at most once a frame: an object whose TBV ended has none
+            // until step 4, and step 4 comes last.
+            if (v.dropped && v.last_drop_frame == tbv_.frame()) {
+                switch (v.last_drop) {
+                    case TbvDropReason::Expired:
+                        o.status = HzbObjectStatus::Expired;
+                        break;
+                    case TbvDropReason::Revealed:
+                        o.status = HzbObjectStatus::Revealed;
+                        break;
+                    case TbvDropReason::Violated:
+                    case TbvDropReason::Invalidated:
+                        o.status = HzbObjectStatus::Violated;
+                        break;
+                }
+            }
+        }
+        ++s.status_count[size_t(o.status)];
+        s.slot_of_object[size_t(index)] = int32_t(s.objects.size());
+        s.objects.push_back(o);
+    }
+
+    // Q. Its live entries are at most one per object.
+    s.queue_size = use_tbvs_ ? tbv_.queue().size() : 0;
+    s.next_expiries.clear();
+    s.next_expiries.reserve(kHzbNextExpiries);
+    if (use_tbvs_) {
+        expiry_scratch_.reserve(tbv_.objects());
+        tbv_.queue().nextExpiries(kHzbNextExpiries, expiry_scratch_);
+        for (const std::pair<int, double>& e : expiry_scratch_)
+            s.next_expiries.push_back(
+                {e.first, scene_->objects[size_t(e.first)].id, e.second, e.second - t_});
+    }
+
+    // T.
+    s.octree_nodes = octree_.nodeCount();
+    s.octree_max_depth = octree_.params().max_depth;
+
+    // The Z-pyramid's coarse levels.
+    s.pyramid_width = pyramid_.width();
+    s.pyramid_height = pyramid_.height();
+    s.pyramid_level_count = pyramid_.levelCount();
+    s.pyramid_levels.clear();
+    size_t texels = 0;
+    for (int l = 0; l < pyramid_.levelCount(); ++l) {
+        const ZPyramidLevel level = pyramid_.level(l);
+        if (level.width > kHzbMaxCapturedSide || level.height > kHzbMaxCapturedSide) continue;
+        s.pyramid_levels.push_back({l, level.width, level.height, texels});
+        texels += size_t(level.width) * size_t(level.height);
+    }
+    s.pyramid_texels.resize(texels);
+    for (const HzbPyramidLevel& l : s.pyramid_levels) {
+        const ZPyramidLevel level = pyramid_.level(l.level);
+        const size_t count = size_t(l.width) * size_t(l.height);
+        for (size_t k = 0; k < count; ++k) s.pyramid_texels[l.offset + k] = float(level.data[k]);
+    }
+
+    s.stats = out.stats;
+    s.tbv_counters = use_tbvs_ ? tbv_.frameCounters() : TbvFrameCounters{};
 }
 
 }  // namespace gridcull

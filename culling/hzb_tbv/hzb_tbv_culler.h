@@ -56,11 +56,13 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "culling/api/culler.h"
 #include "culling/hzb_tbv/dynamic_octree.h"
 #include "culling/hzb_tbv/hzb_tbv_options.h"
+#include "culling/hzb_tbv/hzb_tbv_snapshot.h"
 #include "culling/hzb_tbv/z_pyramid.h"
 #include "culling/raster/id_depth_buffer.h"
 #include "culling/raster/screen_mapping.h"
@@ -81,6 +83,13 @@ public:
     const DynamicOctree& octree() const { return octree_; }
     const ZPyramid& pyramid() const { return pyramid_; }
     const TbvManager& tbvs() const { return tbv_; }
+
+    // The window's snapshot (hzb_tbv_snapshot.h), filled by each cull() while on.
+    void setDebugCapture(bool on) override { capture_ = on; }
+    const DebugSnapshot* debugSnapshot() const override {
+        return capture_ && snapshot_.valid ? &snapshot_ : nullptr;
+    }
+    const HzbTbvSnapshot& snapshot() const { return snapshot_; }
 
 private:
     // The object's box at the frame's time.
@@ -124,6 +133,14 @@ private:
 
     FrameResult* out_ = nullptr;
     const Camera* camera_ = nullptr;
+
+    // Debug capture: a node the traversal reached, and the rest of the
+    // snapshot at the end of the frame. Read-only over the structures.
+    void captureNode(const OctreeNodeView& node, bool entered);
+    void fillSnapshot(const FrameResult& out);
+    bool capture_ = false;
+    HzbTbvSnapshot snapshot_;
+    std::vector<std::pair<int, double>> expiry_scratch_;  // Q's next events
 };
 
 }  // namespace gridcull

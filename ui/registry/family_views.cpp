@@ -2,6 +2,7 @@
 #include "ui/registry/family_views.h"
 
 #include "culling/registry/registry.h"
+#include "ui/hzb_tbv/hzb_tbv_family_view.h"
 #include "ui/lazy_grid/lazy_grid_family_view.h"
 #include "ui/rgvc/rgvc_family_view.h"
 
@@ -10,7 +11,7 @@ namespace gridcull {
 namespace {
 
 std::vector<FamilyViewEntry> builtInViews() {
-    return {rgvcFamilyView(), lazyGridFamilyView()};
+    return {rgvcFamilyView(), lazyGridFamilyView(), hzbTbvFamilyView()};
 }
 
 struct Table {
