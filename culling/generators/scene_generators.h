@@ -22,12 +22,36 @@
 // - rooms: nx x nz square rooms of room_size (x-z plane in 3D, x-y in 2D),
 //   centred on the world; every wall between two rooms has a door_width gap in
 //   its middle, the outer walls are closed. In 3D walls are 0.3 * room_size
-//   high, standing on world.min.y. Each room has a table (a box of side
+//   high, standing on world.min.y, or on the optional `ground` (an addition of
+//   ours: a y inside the world, so that the world can reach below the floor),
+//   with, optionally (`ceiling`, ours too), a slab wall_thickness thick over
+//   the whole building on the walls' tops, made right after the walls, so
+//   that nothing is seen over a wall. Each room has a table (a box of side
 //   0.3 * room_size at its centre, 0.075 * room_size high) and chairs_per_room
 //   chairs (boxes of side 0.05 * room_size, 0.1 * room_size high) that circle
 //   the table at chair_speed on a square loop, as keyframe motion; the loop is
 //   precomputed for the scene's duration (at most kMaxChairKeys keys each,
 //   fewer when there are many chairs) and the chair stops at its end.
+//   Optional people (an addition of ours, for Sudarsky & Gotsman's Fig. 13a, a
+//   building with moving men): `people` boxes of 0.05 x 0.18 x 0.05 room_size
+//   (0.5 x 1.8 x 0.5 at room_size 10; a flat 0.05 x 0.05 square in 2D), below
+//   the walls, so a person is hidden from the rooms it is not seen from. Each
+//   starts at a uniform room of `people_rooms` ([i0, j0, i1, j1], room indices
+//   along a and b, inclusive; the whole building by default) and a uniform
+//   point of its room's walkway: the square loop of half-size q around the
+//   room's centre, q three quarters of the way from the table's edge to the
+//   walls' inner faces (both cleared by half a person's width), so the walkway
+//   stays in the room. It walks at people_speed along the walkway, the shorter
+//   way, to the middle of a side facing a door (a uniform one of the doors to
+//   the rooms of people_rooms, not the one it came through unless there is no
+//   other), then straight through the door's gap (door_width must be wider than
+//   a person) to the middle of the walkway's side in the next room, and so on:
+//   keyframe motion with a key at every corner and door, precomputed for the
+//   scene's duration within the same key budget as the chairs (people and
+//   chairs share it), held at its end. With a single room in people_rooms the
+//   person circles the walkway. People come after the walls, tables and chairs
+//   and draw from the random stream after them, so adding people changes no
+//   other object.
 // - mesh_crowd (3D): `count` copies of the mesh in `file` at scales quantised
 //   to kMeshCrowdScaleLevels levels evenly spread over `scale` (so copies share
 //   kMeshCrowdScaleLevels meshes at most), placed like sphere_cluster, each in
@@ -79,7 +103,23 @@ struct RoomsParams {
     double room_size = 10.0, wall_thickness = 0.2, door_width = 1.0;
     int64_t chairs_per_room = 0;
     double chair_speed = 0.0;
+    int64_t people = 0;
+    double people_speed = 0.0;
+    // Rooms people walk in, inclusive: [people_room_min, people_room_max] per
+    // floor-plan axis (a, b); -1 in people_room_max means the last room.
+    int64_t people_room_min[2] = {0, 0};
+    int64_t people_room_max[2] = {-1, -1};
+    // 3D: the floor's y; world.min.y unless has_ground.
+    bool has_ground = false;
+    double ground = 0.0;
+    // 3D: a ceiling over the whole building (a slab wall_thickness thick on
+    // the walls' tops), so that nothing is seen over a wall, as in a building.
+    bool ceiling = false;
 };
+
+// A person's size, as fractions of room_size (scene_generators.h, "rooms").
+constexpr double kPersonWidth = 0.05;
+constexpr double kPersonHeight = 0.18;
 
 struct MeshCrowdParams {
     int64_t count = 0;

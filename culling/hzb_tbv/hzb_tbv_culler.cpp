@@ -43,6 +43,7 @@ void HzbTbvCuller::reset(const Scene& scene) {
     const size_t n = scene.objects.size();
     max_speed_.assign(n, 0.0);
     bound_radius_.assign(n, 0.0);
+    reach_.assign(n, Aabb{});
     tested_stamp_.assign(n, 0);
     dynamic_.clear();
     reveals_.clear();
@@ -54,6 +55,7 @@ void HzbTbvCuller::reset(const Scene& scene) {
             dynamic_.push_back(int(i));
             max_speed_[i] = maxSpeedOf(object);
             bound_radius_[i] = boundingRadiusOf(object, 3);
+            reach_[i] = reachOf(object, scene.grid.world, 3);
         }
         if (object.mesh) mesh_vertices = std::max(mesh_vertices, object.mesh->vertices.size());
         keys = std::max(keys, object.motion.keys.size());
@@ -147,6 +149,26 @@ void HzbTbvCuller::testAndDraw(int index) {
 }
 
 TbvShape HzbTbvCuller::makeTbv(int index, double validity) {
+    const TbvShape shape = motionTbv(index, validity);
+    // Cut to where the object can ever be: a person's sphere would reach
+    // through the floor and out of the octree's root (kept at the root, tested
+    // first against an empty pyramid, so revealed every time), and past the
+    // walls of a chair's loop.
+    const TbvBox bounds = tbvBounds(shape);
+    const Aabb& reach = reach_[size_t(index)];
+    const TbvBox cut{glm::max(bounds.min, reach.min), glm::min(bounds.max, reach.max)};
+    if (cut.min == bounds.min && cut.max == bounds.max) return shape;
+    if (!(cut.min.x <= cut.max.x && cut.min.y <= cut.max.y && cut.min.z <= cut.max.z))
+        return shape;  // a reach that misses the TBV: keep it whole (never seen in a scene)
+    TbvShape box;
+    box.kind = TbvShapeKind::Box;
+    box.dimensions = 3;
+    box.box = cut;
+    box.centre = 0.5 * (cut.min + cut.max);
+    return box;
+}
+
+TbvShape HzbTbvCuller::motionTbv(int index, double validity) {
     const SceneObject& object = scene_->objects[size_t(index)];
     const glm::dvec3 shift = scene_->displacementAt(object, t_);
     const double speed = max_speed_[size_t(index)];
@@ -244,7 +266,7 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
         out.stats.set(Counter::StateFetches, int64_t(dynamic_.size()));
         out.stats.set(Counter::TbvMessages, 0);
     }
-    out.stats.add(Counter::ObjectUpdates, 0);       // reported, 0 or more
+    out.stats.add(Counter::ObjectUpdates, 0);      // reported, 0 or more
     out.stats.add(Counter::OctreeUpdateNodes, 0);  // likewise
     std::sort(out.pvs.begin(), out.pvs.end());
     if (capture_) fillSnapshot(out);

@@ -105,8 +105,11 @@ private:
     // Tests the object on its current box; if it may be visible, draws it,
     // refreshes the pyramid under it and adds it to the PVS.
     void testAndDraw(int index);
-    // Step 4's TBV for the object, from now for `validity` seconds.
+    // Step 4's TBV for the object, from now for `validity` seconds: the
+    // motion's (motionTbv) cut to the object's reach.
     TbvShape makeTbv(int index, double validity);
+    // The TBV of the --hzb-tbv-shape choice from the object's motion bound.
+    TbvShape motionTbv(int index, double validity);
 
     std::string name_;
     bool use_tbvs_;
@@ -120,6 +123,7 @@ private:
     bool ready_ = false;
     std::vector<double> max_speed_;
     std::vector<double> bound_radius_;
+    std::vector<Aabb> reach_;  // per object: where it can ever be (motion_bounds.h)
     std::vector<int> dynamic_;
     std::vector<int64_t> tested_stamp_;  // the frame the object was last tested in
     std::vector<double> key_times_;      // one keyframed object's key times (swept TBVs)

@@ -130,11 +130,59 @@ bool readForest(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
     return good;
 }
 
+// The rooms generator's people (scene_generators.h): `people`, `people_speed`
+// (required when people > 0; 0: standing people), `people_rooms` ([i0, j0, i1, j1] inside the
+// building), and a door wide enough for a person. `rooms` has been read (or left at 1 x 1);
+// `sizes_ok`: room_size and door_width were read.
+bool readPeople(JsonObjectReader& g, SceneLoadContext& c, const int64_t rooms[2], bool sizes_ok,
+                RoomsParams& p) {
+    bool good = g.integer("people", false, 0, kMaxSceneObjects,
+                          "an integer in [0, " + std::to_string(kMaxSceneObjects) + "]", p.people);
+    const bool speed_ok = g.number("people_speed", false, kNonNegative, p.people_speed);
+    good = speed_ok && good;
+    if (good && p.people > 0 && !g.has("people_speed")) {
+        c.errors.add(g.pathOf("people_speed"),
+                     "must be given when people > 0: a finite number >= 0 (0: they stand "
+                     "still), got nothing (the key is missing)");
+        good = false;
+    }
+    if (good && sizes_ok && p.people > 0 && !(p.door_width > kPersonWidth * p.room_size)) {
+        c.errors.add(g.pathOf("door_width"),
+                     "must be wider than a person (" + formatNumber(kPersonWidth) +
+                         " * room_size = " + formatNumber(kPersonWidth * p.room_size) +
+                         ") when people > 0, got " + formatNumber(p.door_width));
+        good = false;
+    }
+    if (!g.has("people_rooms")) return good;
+    int64_t r[4] = {0, 0, 0, 0};
+    const std::string expected = "integers in [0, " + std::to_string(kMaxRoomsPerAxis - 1) +
+                                 "] ([i0, j0, i1, j1]: the first and last room on each axis)";
+    if (!g.integers("people_rooms", false, 4, 0, kMaxRoomsPerAxis - 1, expected, r)) return false;
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::string path = indexPath(g.pathOf("people_rooms"), size_t(axis + 2));
+        if (r[axis + 2] < r[axis]) {
+            c.errors.add(path, "must be at least people_rooms[" + std::to_string(axis) +
+                                   "] = " + std::to_string(r[axis]) + ", got " +
+                                   std::to_string(r[axis + 2]));
+            good = false;
+        } else if (r[axis + 2] >= rooms[axis]) {
+            c.errors.add(path, "must be a room of the building, less than rooms[" +
+                                   std::to_string(axis) + "] = " + std::to_string(rooms[axis]) +
+                                   ", got " + std::to_string(r[axis + 2]));
+            good = false;
+        }
+        p.people_room_min[axis] = r[axis];
+        p.people_room_max[axis] = r[axis + 2];
+    }
+    return good;
+}
+
 bool readRooms(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
     RoomsParams p;
-    bool good = g.checkKeys({"type", "rooms", "room_size", "wall_thickness", "door_width",
-                             "chairs_per_room", "chair_speed"},
-                            "for generator 'rooms'");
+    bool good = g.checkKeys(
+        {"type", "rooms", "room_size", "wall_thickness", "door_width", "chairs_per_room",
+         "chair_speed", "people", "people_speed", "people_rooms", "ground", "ceiling"},
+        "for generator 'rooms'");
     int64_t rooms[2] = {1, 1};
     good =
         g.integers("rooms", true, 2, 1, kMaxRoomsPerAxis,
@@ -160,10 +208,41 @@ bool readRooms(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
                                                  ", got " + formatNumber(p.door_width));
         good = false;
     }
+    if (g.has("ground")) {
+        const Aabb& world = c.scene.grid.world;
+        const std::string expected = "a number in [world.min[1], world.max[1]) = [" +
+                                     formatNumber(world.min.y) + ", " + formatNumber(world.max.y) +
+                                     ") (the floor's y, 3D only)";
+        if (c.dimensions != 3) {
+            c.errors.add(g.pathOf("ground"),
+                         "does not exist in a 2D scene (the floor's y, 3D only)");
+            good = false;
+        } else if (g.number("ground", false,
+                            NumberRule{expected.c_str(), world.min.y, false, world.max.y, true},
+                            p.ground)) {
+            p.has_ground = true;
+        } else {
+            good = false;
+        }
+    }
+    if (g.has("ceiling")) {
+        int64_t ceiling = 0;
+        if (c.dimensions != 3) {
+            c.errors.add(g.pathOf("ceiling"),
+                         "does not exist in a 2D scene (a ceiling over the building, 3D only)");
+            good = false;
+        } else if (g.integer("ceiling", false, 0, 1, "0 or 1 (1: a ceiling over the building)",
+                             ceiling)) {
+            p.ceiling = ceiling == 1;
+        } else {
+            good = false;
+        }
+    }
     p.rooms_x = rooms[0];
     p.rooms_z = rooms[1];
+    good = readPeople(g, c, rooms, size_ok && door_ok, p) && good;
     if (good) good = checkSpan(g, c, "rooms", double(std::max(p.rooms_x, p.rooms_z)) * p.room_size);
-    plan.count = p.rooms_x * p.rooms_z * (5 + p.chairs_per_room);
+    plan.count = p.rooms_x * p.rooms_z * (5 + p.chairs_per_room) + p.people + (p.ceiling ? 1 : 0);
     plan.params = p;
     return good;
 }
