@@ -63,13 +63,14 @@ void RgvcCuller::reset(const Scene& scene) {
     tbv_seen_.assign(n, 0);
     tbv_test_ = 0;
     // Spread periods (spreadValidity) so that TBVs made together do not
-    // expire together; adaptive ones never below one frame.
+    // expire together, never below the floor: one frame (and a hair, so that
+    // t + dt rounds past the next frame's time), or --rgvc-validity if shorter.
     TbvManagerOptions tbv;
     tbv.mode = TbvUpdateMode::Explicit;
     tbv.validity_mode =
         options_.adaptive_validity ? TbvValidityMode::Adaptive : TbvValidityMode::Fixed;
     tbv.initial_validity = options_.validity_s;
-    tbv.validity_floor = scene.dt;
+    tbv.validity_floor = scene.dt * (1.0 + 1e-9);
     tbv.spread_validity = true;
     tbvs_.reset(n, tbv);
     renewals_.clear();

@@ -64,7 +64,8 @@
 //  - TBV validity: RgvcOptions::validity_s (--rgvc-validity), adaptive by
 //    default (Sudarsky & Gotsman, s3.4; culling/tbv/tbv_validity.h) so that a
 //    period too long for the scene corrects itself instead of having its TBV
-//    revealed every frame, spread (spreadValidity, never below one frame) so
+//    revealed every frame, spread (spreadValidity, never below one frame unless
+//    --rgvc-validity is shorter) so
 //    that TBVs made together do not expire together, and shortened (as the
 //    paper suggests) so that the TBV
 //    leaves the viewer's voxel outside; when even one frame's validity would
@@ -76,9 +77,11 @@
 //    (Sudarsky & Gotsman's step 4, the TBV manager's endFrame), at the same
 //    time t and against that frame's viewer voxel; it is written into T at
 //    the next frame's start, as in the paper, so that T after a frame is T as
-//    its traversal saw it. The next frame's viewer moves from that voxel, so
-//    the boundary argument (an 8-connected walk crosses a 4-connected curve on
-//    one of its voxels) and the teleport rule hold as before.
+//    its traversal saw it, and its validity counts from that frame (it is one
+//    frame longer from t, and the TBV grows by that frame's motion). The next
+//    frame's viewer moves from that voxel, so the boundary argument (an
+//    8-connected walk crosses a 4-connected curve on one of its voxels) and
+//    the teleport rule hold as before.
 //  - A revealed object whose voxels the traversal had already passed
 //    non-occluded joins the PVS at once (the traversal will not come back).
 //  - Time going backwards, or a scene with a different object count, resets.
@@ -158,8 +161,10 @@ private:
                      bool during_traversal);
     bool objectTouchesFrustum(const Scene& scene, int index) const;
     // rgvc_tbv_life.cpp: the TBVs' life cycle (s4.1, s5.2)
-    // The object's TBV for `validity` seconds from now (may shorten it), written
-    // into T now or (write false) left to the next frame's start.
+    // The object's TBV for `validity` seconds from now (may shorten it, or make
+    // it +infinity for an object that cannot move), written into T now, or
+    // (write false) at the next frame's start, its validity then counted from
+    // that frame.
     TbvShape makeTbv(const Scene& scene, int index, double& validity, bool write);
     bool hasTbv(int index) const { return tbvs_.hasTbv(index); }
     void revealTbv(const Scene& scene, int index, bool during_traversal);

@@ -41,7 +41,8 @@ struct VoxelAxes {
         const double u0 = (lo - origin[a]) / size[a], u1 = (hi - origin[a]) / size[a];
         if (!(u0 < u1)) return false;
         double c0 = std::clamp(std::ceil(u0 - kDiscretize3Slack), 0.0, double(count[a]));
-        double c1 = std::clamp(std::floor(u1 + kDiscretize3Slack) - 1.0, -1.0, double(count[a] - 1));
+        double c1 =
+            std::clamp(std::floor(u1 + kDiscretize3Slack) - 1.0, -1.0, double(count[a] - 1));
         if (c0 <= c1 && lower(a, int(c0)) < lo) c0 += 1.0;
         if (c0 <= c1 && lower(a, int(c1) + 1) > hi) c1 -= 1.0;
         i0 = int(c0);
@@ -51,7 +52,9 @@ struct VoxelAxes {
     double lower(int a, int i) const { return origin[a] + double(i) * size[a]; }
 };
 
-double gapTo(double c, double lo, double hi) { return c < lo ? lo - c : (c > hi ? c - hi : 0.0); }
+double gapTo(double c, double lo, double hi) {
+    return c < lo ? lo - c : (c > hi ? c - hi : 0.0);
+}
 
 // Rows (y, z) with their x spans of the voxels a box touches or lies around.
 template <typename Span>

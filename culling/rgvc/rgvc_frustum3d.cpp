@@ -13,7 +13,9 @@ namespace {
 
 constexpr double kIndexLimit = 1099511627776.0;  // 2^40 voxels: beyond any grid
 
-int64_t clampIndex(double v) { return int64_t(std::clamp(v, -kIndexLimit, kIndexLimit)); }
+int64_t clampIndex(double v) {
+    return int64_t(std::clamp(v, -kIndexLimit, kIndexLimit));
+}
 
 }  // namespace
 

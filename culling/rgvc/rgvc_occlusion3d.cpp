@@ -71,7 +71,8 @@ int RgvcDirectionMap::footprint(const glm::dvec3& lo, const glm::dvec3& hi,
         const double near_depth = c[a] >= 0.0 ? lo[a] - eye_[a] : eye_[a] - hi[a];
         const double reach_b = std::max(std::abs(lo[b] - eye_[b]), std::abs(hi[b] - eye_[b]));
         const double reach_c = std::max(std::abs(lo[cc] - eye_[cc]), std::abs(hi[cc] - eye_[cc]));
-        if (near_depth > reach_b && near_depth > reach_c) return faceFootprint(only, lo, hi, out[0]);
+        if (near_depth > reach_b && near_depth > reach_c)
+            return faceFootprint(only, lo, hi, out[0]);
     }
     int n = 0;
     for (int face = 0; face < 6; ++face) {
@@ -210,8 +211,7 @@ bool RgvcDirectionMap::mayCoverPartOf(const glm::dvec3& lo, const glm::dvec3& hi
     for (int k = 0; k < n; ++k) {
         const DirectionRect& r = rects[size_t(k)];
         const DirectionRect& b = covered_bounds_[size_t(r.face)];
-        if (!b.empty() && r.i0 <= b.i1 && r.i1 >= b.i0 && r.j0 <= b.j1 && r.j1 >= b.j0)
-            return true;
+        if (!b.empty() && r.i0 <= b.i1 && r.i1 >= b.i0 && r.j0 <= b.j1 && r.j1 >= b.j0) return true;
     }
     return false;
 }

@@ -99,8 +99,8 @@ struct RgvcMatrixMemory {
     size_t identifiers_static = 0;   // I, static objects' lists
     size_t identifiers_dynamic = 0;  // I, dynamic objects' lists
     size_t tbv = 0;                  // T (Txy, Txz and Tyz in 3D), only with dynamic objects
-    size_t traversal = 0;  // scratch bits: visited and not occluded; 3D: voxels with I ids
-    size_t direction_map = 0;        // 3D: the occlusion direction map
+    size_t traversal = 0;      // scratch bits: visited and not occluded; 3D: voxels with I ids
+    size_t direction_map = 0;  // 3D: the occlusion direction map
 
     size_t total() const {
         return occluder + static_occluder + occlusion + identifiers_static + identifiers_dynamic +
@@ -129,15 +129,15 @@ struct RgvcSnapshot final : DebugSnapshot {
     const BitMatrix* occlusion = nullptr;               // H
     const IdListMatrix* identifiers_static = nullptr;   // I of static objects
     const IdListMatrix* identifiers_dynamic = nullptr;  // I of dynamic objects
-    const IdListMatrix* tbvs = nullptr;  // T, 3D Txy (nullptr without dynamic objects)
-    const IdListMatrix* tbvs_xz = nullptr;  // 3D Txz
-    const IdListMatrix* tbvs_yz = nullptr;  // 3D Tyz
+    const IdListMatrix* tbvs = nullptr;               // T, 3D Txy (nullptr without dynamic objects)
+    const IdListMatrix* tbvs_xz = nullptr;            // 3D Txz
+    const IdListMatrix* tbvs_yz = nullptr;            // 3D Tyz
     const RgvcDirectionMap* direction_map = nullptr;  // 3D
 
     std::vector<RgvcVisit> visits;
     std::vector<RgvcSeed> seeds;
-    std::vector<RgvcOccluderView> occluders;    // 2D
-    std::vector<RgvcOccluder3d> occluders3d;    // 3D
+    std::vector<RgvcOccluderView> occluders;  // 2D
+    std::vector<RgvcOccluder3d> occluders3d;  // 3D
     std::vector<RgvcTbvView> tbv_list;
     std::vector<RgvcRevealView> reveals;
 

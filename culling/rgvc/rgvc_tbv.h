@@ -108,7 +108,8 @@ void forEachTbvBoundaryVoxelClipped(const RgvcTbvCurve& curve, const RgvcVoxelBo
     // The clip box's border voxels within the filled disc: two rows, two columns.
     auto span = [&](int64_t offset, int64_t& lo, int64_t& hi) {
         if (offset * offset > reach * reach) return false;
-        const int64_t half = int64_t(std::floor(std::sqrt(double(reach * reach - offset * offset))));
+        const int64_t half =
+            int64_t(std::floor(std::sqrt(double(reach * reach - offset * offset))));
         lo = -half, hi = half;
         return true;
     };

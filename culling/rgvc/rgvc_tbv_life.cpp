@@ -54,8 +54,14 @@ TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity, bo
     const double scale = std::max({voxel_size_.x, voxel_size_.y, voxel_size_.z, base});
     const double pad = 1e-9 * scale;
     // The manager's period (spread, adapted); an object that cannot move keeps
-    // its TBV for ever.
-    if (!(speed > 0.0)) validity = std::numeric_limits<double>::infinity();
+    // its TBV for ever. A TBV made at a frame's end (not written now) first
+    // serves the next frame: its period counts from there, as the paper's,
+    // made in the next frame's step 1, would (one frame longer from now).
+    const double lead = write ? 0.0 : scene.dt;
+    if (!(speed > 0.0))
+        validity = std::numeric_limits<double>::infinity();
+    else
+        validity += lead;
     b.centre = object.anchor + shift;
     // 2D: a disc around the anchor, cut to where the object can ever be. 3D:
     // the object's bounds now grown on every side (a cube of motion), cut so.
@@ -90,23 +96,24 @@ TbvShape RgvcCuller::makeTbv(const Scene& scene, int index, double& validity, bo
             }
         }
         const double shorter = speed > 0.0 ? (largest - pad) / speed : -1.0;
-        if (shorter >= scene.dt && shorter < validity) {
+        if (shorter >= scene.dt + lead && shorter < validity) {
             validity = shorter;
             reshape(validity);
         }
         b.filled = tbvMayEncloseViewer(b);
     }
-    const glm::dvec3 g(b.radius);
-    const Aabb cube = intersect({now.min - g, now.max + g}, reach);
     if (dimensions_ == 2) {
         b.edge = !reach_in_grid_[size_t(index)] && !tbvCurveInsideGrid(grid_, b.curve);
-    } else {
-        b.edge = !reach_in_grid_[size_t(index)] && !insideBox(cube, grid_.world, 3);
-        b.box = cube;
+        if (write) writeTbv(index, true);
+        // What the manager keeps: the disc itself.
+        return sphereTbv(2, b.centre, b.radius, 0.0, 0.0);
     }
+    const glm::dvec3 g(b.radius);
+    const Aabb cube = intersect({now.min - g, now.max + g}, reach);
+    b.edge = !reach_in_grid_[size_t(index)] && !insideBox(cube, grid_.world, 3);
+    b.box = cube;
     if (write) writeTbv(index, true);
-    // What the manager keeps: the disc (2D) or the cut cube (3D) itself.
-    if (dimensions_ == 2) return sphereTbv(2, b.centre, b.radius, 0.0, 0.0);
+    // What the manager keeps: the cut cube itself.
     TbvShape shape;
     shape.kind = TbvShapeKind::Box;
     shape.dimensions = 3;
@@ -171,8 +178,8 @@ void RgvcCuller::revealTbv(const Scene& scene, int index, bool during_traversal)
 
 void RgvcCuller::handleDynamicObjects(const Scene& scene, bool teleported) {
     // Every dynamic object is, each frame, either in V (written into O and I)
-    // or under a TBV. The last frame ended with V = the dynamic objects of its
-    // PVS (the others got TBVs then, criterion 1); the others are touched only
+    // or under a TBV. The last frame ended with V = the objects of V in its PVS
+    // (the others got TBVs then, criterion 1); the others are touched only
     // when their TBV expires or is revealed.
     // The TBVs the last frame made go into T first: this frame may drop them.
     for (const int index : unwritten_) writeTbv(index, true);

@@ -40,7 +40,9 @@ ShellFace shellFace(int f) {
 
 // How far face `owner_axis` trims axis `axis`: x faces own their y and z edges,
 // y faces their z edges.
-int64_t inset(int face_axis, int axis) { return axis < face_axis ? 1 : 0; }
+int64_t inset(int face_axis, int axis) {
+    return axis < face_axis ? 1 : 0;
+}
 
 int faceOfOffset(const glm::i64vec3& d, int64_t k) {
     for (int a = 0; a < 3; ++a)
@@ -55,7 +57,8 @@ void RgvcCuller::traverse3d(const Scene& scene) {
     for (int a = 0; a < 3; ++a) {
         const int64_t top = grid_.resolution[a] - 1;
         first = std::max({first, -viewer3_[a], viewer3_[a] - top});
-        last = std::max({last, int64_t(std::llabs(viewer3_[a])), int64_t(std::llabs(viewer3_[a] - top))});
+        last = std::max(
+            {last, int64_t(std::llabs(viewer3_[a])), int64_t(std::llabs(viewer3_[a] - top))});
     }
     // No frustum voxel lies beyond the frustum's voxel box (far is a plane, so
     // a wide frustum reaches much further than `far` from the eye).
@@ -168,7 +171,8 @@ void RgvcCuller::visitVoxel3d(const Scene& scene, int x, int y, int z, int64_t k
             if (snapshot_enabled_) {
                 int face, i, j;
                 direction_map_.cellOfPoint(lo + 0.5 * voxel_size_, face, i, j);
-                noteOccluded(x, row, snapshot_.direction_cause[direction_map_.cellIndex(face, i, j)]);
+                noteOccluded(x, row,
+                             snapshot_.direction_cause[direction_map_.cellIndex(face, i, j)]);
             }
             occlusion_.set(x, row);
             occluded = true;
@@ -335,11 +339,10 @@ void RgvcCuller::occludeFromLayer3d(int64_t k) {
     // directions span at most sqrt(3) d_max / ((m - 1) d_min) in the face's
     // coordinates, twice that at a face's edge, and a face has R / 2 cells per
     // unit.
-    const double spread = std::sqrt(3.0) *
-                          std::max({voxel_size_.x, voxel_size_.y, voxel_size_.z}) /
+    const double spread = std::sqrt(3.0) * std::max({voxel_size_.x, voxel_size_.y, voxel_size_.z}) /
                           std::min({voxel_size_.x, voxel_size_.y, voxel_size_.z});
-    const int margin = int(std::min(double(last + 1),
-                                    std::ceil(spread * (last + 1) / double(k)) + 1.0));
+    const int margin =
+        int(std::min(double(last + 1), std::ceil(spread * (last + 1) / double(k)) + 1.0));
     for (const glm::ivec3& v : layer_occluders_) {
         const glm::dvec3 lo = o + glm::dvec3(v) * voxel_size_;
         const int n = direction_map_.footprint(lo, lo + voxel_size_, rects);
@@ -356,11 +359,12 @@ void RgvcCuller::occludeFromLayer3d(int64_t k) {
                 continue;
             }
             const int32_t cause = int32_t(snapshot_.occluders3d.size());
-            covered += direction_map_.coverCells(rect, direction_pass_, [&](const DirectionCell& c) {
-                if (!blocked(c)) return false;
-                snapshot_.direction_cause[direction_map_.cellIndex(c.face, c.i, c.j)] = cause;
-                return true;
-            });
+            covered +=
+                direction_map_.coverCells(rect, direction_pass_, [&](const DirectionCell& c) {
+                    if (!blocked(c)) return false;
+                    snapshot_.direction_cause[direction_map_.cellIndex(c.face, c.i, c.j)] = cause;
+                    return true;
+                });
         }
         direction_covered_ = direction_covered_ || covered > 0;
         if (snapshot_enabled_)

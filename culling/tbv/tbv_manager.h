@@ -95,6 +95,9 @@
 //    V on frame 1 in both modes): the paper's initial state has every dynamic
 //    object marked visible, i.e. in T, and without this every object would be
 //    one frame late at the start.
+//  - renew() gives an object whose TBV just expired its next TBV at once, for
+//    a culler that follows Batagelo & Wu's regular grid ("a new validity
+//    period is attributed") rather than looking at the object again.
 //  - Optional spread of validity periods (spreadValidity, off by default: the
 //    paper has none) so that TBVs made in one frame do not all expire together;
 //    a spread period never falls below validity_floor (one frame), or TBVi

@@ -30,7 +30,7 @@ struct RgvcObjectVoxels {
     // Reached open first, then occluded, then not reached; each by layer.
     std::vector<RgvcObjectVoxel> voxels;
     int64_t open = 0, occluded = 0, unreached = 0;
-    bool under_tbv = false;           // hidden under a TBV at the end of the frame
+    bool under_tbv = false;           // hidden under a TBV in T during the frame's traversal
     int32_t revealed = kRgvcNoLayer;  // its TBV was revealed at this layer (-1: before)
 };
 

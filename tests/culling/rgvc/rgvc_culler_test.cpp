@@ -105,6 +105,36 @@ TEST(RgvcCuller, TbvIsCreatedExpiresAndIsRevealed) {
     EXPECT_TRUE(has(frames.back().pvs, 1));  // out in the open at y = 78.5
 }
 
+// A TBV made at a frame's end goes into T at the next frame's start; time
+// going backwards resets the culler with such TBVs still waiting. The frames
+// after the rewind must match a fresh run frame by frame.
+TEST(RgvcCuller, TimeGoingBackwardsWithTbvsWaitingStartsAfresh) {
+    Scene scene = floorScene();
+    addBox(scene, 0, {40, 0, 0}, {42, 60, 0});
+    addSphere(scene, 1, {70, 20, 0}, 1);  // behind the wall: its TBV waits at frame 0's end
+    moving(scene, {0, 15, 0});
+    scene.finalize();
+    test::setCamera(scene, {10, 50, 0}, {90, 50, 0}, 90);
+    RgvcOptions options;
+    options.validity_s = 0.5;
+    RgvcCuller fresh(options), rewound(options);
+    const std::vector<FrameResult> want = runChecked(scene, 12, fresh);
+    ASSERT_EQ(want[0].stats.get(Counter::TbvCreated), 1);
+    FrameResult got;
+    for (const int f : {0, 1, 2, 3, 4, 5, 1}) {  // rewinds from frames 5 and 1
+        const double t = scene.timeOfFrame(f);
+        rewound.cull(scene, cameraAt(scene, t), t, got);
+    }
+    for (int f = 0; f < 12; ++f) {
+        const double t = scene.timeOfFrame(f);
+        rewound.cull(scene, cameraAt(scene, t), t, got);
+        EXPECT_EQ(got.pvs, want[size_t(f)].pvs) << "frame " << f;
+        EXPECT_EQ(got.stats.get(Counter::TbvCreated),
+                  want[size_t(f)].stats.get(Counter::TbvCreated))
+            << "frame " << f;
+    }
+}
+
 TEST(RgvcCuller, TeleportIntoABoundaryTbvRevealsIt) {
     Scene scene = floorScene();
     addSphere(scene, 0, {20, 80, 0}, 1);  // static, never in view
@@ -195,7 +225,7 @@ TEST(RgvcCuller, TbvOfAnObjectThatStaysInTheGridIsCutToItAndNotRevealedEveryFram
     Scene scene = floorScene();
     addBox(scene, 0, {40, 0, 0}, {42, 100, 0});  // a full-height wall
     addSphere(scene, 1, {96, 50, 0}, 1);         // behind it, near the grid's edge
-    moving(scene, {0, 3, 0});  // linear motion folds back at the world's walls
+    moving(scene, {0, 3, 0});                    // linear motion folds back at the world's walls
     scene.finalize();
     lookAwayAndBeyond(scene);
     // A TBV valid for an hour: its disc would cover the whole grid and beyond.
