@@ -48,6 +48,8 @@ void HzbTbvCuller::reset(const Scene& scene) {
     dynamic_.clear();
     reveals_.clear();
     reveals_.reserve(n);
+    retests_.clear();
+    retests_.reserve(n);
     size_t mesh_vertices = 0, keys = 0;
     for (size_t i = 0; i < n; ++i) {
         const SceneObject& object = scene.objects[i];
@@ -126,12 +128,21 @@ void HzbTbvCuller::writeObject(int index) {
 
 void HzbTbvCuller::visitEntry(int index) {
     if (use_tbvs_ && tbv_.hasTbv(index)) {
-        // A hidden object's TBV: while it stays hidden, so does its object.
-        if (!boxMayBeVisible(toAabb(tbvBounds(tbv_.tbv(index).shape)))) return;
-        tbv_.reveal(index);
-        reveals_.push_back(index);
+        // A hidden object's TBV: while it stays hidden, so does its object. One
+        // that may be visible is tested again after the traversal (header).
+        if (boxMayBeVisible(toAabb(tbvBounds(tbv_.tbv(index).shape)))) retests_.push_back(index);
+        return;
     }
     testAndDraw(index);
+}
+
+void HzbTbvCuller::retestTbvs() {
+    for (const int index : retests_) {
+        if (!boxMayBeVisible(toAabb(tbvBounds(tbv_.tbv(index).shape)))) continue;
+        tbv_.reveal(index);
+        reveals_.push_back(index);
+        testAndDraw(index);
+    }
 }
 
 void HzbTbvCuller::testAndDraw(int index) {
@@ -228,6 +239,7 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
     // Step 3. Objects outside the world sit at the root, whose box does not
     // bound them: the root is then never skipped on its box.
     reveals_.clear();
+    retests_.clear();
     const bool root_holds_outside = octree_.outsideCount() > 0;
     int64_t nodes = 0;
     if (capture_) {
@@ -245,6 +257,7 @@ void HzbTbvCuller::cull(const Scene& scene, const Camera& camera, double t, Fram
         return true;
     });
     out.stats.set(Counter::NodesVisited, nodes);
+    retestTbvs();
     // The revealed objects replace their TBVs in T.
     for (const int index : reveals_) writeObject(index);
 

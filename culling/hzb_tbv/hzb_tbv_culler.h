@@ -16,9 +16,10 @@
 //      is tested on its box the same way; a visible object is drawn into the
 //      software z-buffer (the shared rasterizer, culling/raster) and the pyramid
 //      is refreshed under it, so that what is drawn hides what comes after. A
-//      visible TBV is revealed: its object's current box is tested and drawn at
-//      once, and T is corrected after the traversal (T is not changed while it
-//      is being walked; section 3.3's remark on step 3);
+//      TBV that passes is tested again after the traversal, against the whole
+//      pyramid; one still visible is revealed: its object's current box is
+//      tested and drawn at once, and T is corrected after that (T is not
+//      changed while it is being walked; section 3.3's remark on step 3);
 //   4. the objects of V that nothing saw get a TBV, which replaces them in T.
 // `hzb` is the paper's comparison: no TBVs, every dynamic object written in T
 // every frame (LCA update), then step 3.
@@ -42,6 +43,25 @@
 // when).
 //
 // Departures from the paper, and why:
+// - A TBV is cut to the box the object can ever reach (the world for linear
+//   and random motion, which fold back at its walls; the keys' box for a
+//   keyframed path; culling/scene/motion_bounds.h), as regular-grid culling
+//   cuts its own: a sphere around an object on the floor reaches through the
+//   floor, out of the octree (an entry outside it sits at the root, tested
+//   before anything is drawn, so found visible every frame), and a chair's
+//   sphere past the loop it circles. The cut keeps the TBV conservative: the
+//   object is in both.
+// - The octree's root is the cube on the world's longest side (the paper's
+//   octree subdivides a cube): a flat world's own box would halve its height
+//   at every level, and every wall taller than half the world would stay at
+//   the root.
+// - A TBV found visible during the traversal is revealed only if it is still
+//   visible against the pyramid the whole traversal built. An entry sits in
+//   the smallest node containing it, so a large TBV (a walking person's over
+//   several rooms) is met at a high node, before the walls inside that node
+//   are drawn, and would pass against a nearly empty pyramid. The second test
+//   only sees more of what was really drawn, so it stays conservative; the
+//   revealed object is then tested and drawn as before, in the same frame.
 // - The octree holds each entry in the one smallest node containing its box
 //   (dynamic_octree.h says why), and the traversal tests a node's box against
 //   the pyramid before its entries, as Greene's hierarchical z-buffer does.
@@ -102,6 +122,9 @@ private:
     void writeObject(int index);
     // Step 3 at one entry of a node.
     void visitEntry(int index);
+    // Step 3's end: the TBVs that passed their test during the traversal are
+    // tested again against the whole pyramid; those still visible are revealed.
+    void retestTbvs();
     // Tests the object on its current box; if it may be visible, draws it,
     // refreshes the pyramid under it and adds it to the PVS.
     void testAndDraw(int index);
@@ -128,6 +151,7 @@ private:
     std::vector<int64_t> tested_stamp_;  // the frame the object was last tested in
     std::vector<double> key_times_;      // one keyframed object's key times (swept TBVs)
     std::vector<int> reveals_;           // step 3's revealed objects, to rewrite in T after it
+    std::vector<int> retests_;           // TBVs that passed their test during the traversal
 
     DynamicOctree octree_;
     IdDepthBuffer buffer_;
