@@ -70,7 +70,26 @@ bool GlImageTarget::init(std::string& error) {
     return true;
 }
 
+GlImageTarget::~GlImageTarget() {
+    for (int s = 0; s < queries_.capacity(); ++s) {
+        GLuint& name = queries_.slotPayload(s).name;
+        if (name) glDeleteQueries(1, &name);
+        name = 0;
+    }
+}
+
+void GlImageTarget::makeQueryObjects() {
+    for (int s = 0; s < queries_.capacity(); ++s) {
+        GLuint& name = queries_.slotPayload(s).name;
+        if (!name) glGenQueries(1, &name);
+    }
+}
+
 void GlImageTarget::prepare(const Scene& scene) {
+    queries_.reserve(kOcclusionQueryReserve);
+    queries_.releaseAll();
+    makeQueryObjects();
+    counts_ = {};
     meshes_.clear();
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh || meshes_.count(object.mesh.get())) continue;
@@ -88,6 +107,7 @@ void GlImageTarget::begin(const Camera& camera, int width, int height, bool) {
         depth_.assign(size_t(width) * size_t(height), 0.0f);
     }
     height_ = height;
+    camera_ = camera;
     near_ = camera.near;
     far_ = camera.far;
     view_projection_ = glm::mat4(camera.projectionMatrix() * camera.viewMatrix());
@@ -166,6 +186,47 @@ double GlImageTarget::farthestDepth(const PixelRect& rect) const {
 
 void GlImageTarget::end() {
     glFinish();
+}
+
+OcclusionQuery GlImageTarget::issueQuery(const Aabb& box) {
+    const OcclusionQuery query = queries_.acquire();
+    GlQuery& q = queries_.payload(query);
+    ++counts_.issued;
+    q.trivial = occlusionQueryTriviallyVisible(camera_, box);
+    if (q.trivial) {
+        ++counts_.trivial;
+        return query;
+    }
+    if (!q.name) glGenQueries(1, &q.name);  // a slot the pool has just added
+    glDepthMask(GL_FALSE);                  // colour writes are off since begin()
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, q.name);
+    drawMesh(cube_, glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(box.center())),
+                               glm::vec3(box.extent())));
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+    glDepthMask(GL_TRUE);
+    return query;
+}
+
+bool GlImageTarget::queryAvailable(const OcclusionQuery& query) {
+    const GlQuery& q = queries_.payload(query);
+    if (q.trivial) return true;
+    GLuint available = GL_FALSE;
+    glGetQueryObjectuiv(q.name, GL_QUERY_RESULT_AVAILABLE, &available);
+    return available != GL_FALSE;
+}
+
+bool GlImageTarget::queryResult(const OcclusionQuery& query) {
+    const GlQuery q = queries_.payload(query);
+    ++counts_.read;
+    GLuint passed = GL_TRUE;
+    if (!q.trivial) {
+        GLuint available = GL_FALSE;
+        glGetQueryObjectuiv(q.name, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) ++counts_.stalled;
+        glGetQueryObjectuiv(q.name, GL_QUERY_RESULT, &passed);
+    }
+    queries_.release(query);
+    return passed != GL_FALSE;
 }
 
 }  // namespace gridcull

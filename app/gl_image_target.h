@@ -21,6 +21,18 @@
 // target's image hides. bench reports such false culls; an image-space culler's
 // conservative guarantee is for the software target. Needs a current OpenGL 3.3
 // core context for its whole life.
+//
+// Occlusion queries (culling/api/occlusion_queries.h) are GL_ANY_SAMPLES_PASSED
+// query objects around a draw of the box as a cube, with colour and depth writes
+// off, against the depth drawn so far: they sample the same pixel centres as the
+// software target, so on the same boxes they agree with it up to float
+// arithmetic, 24-bit depth and facetted spheres (tests/app/gl_image_target_test
+// measures how often). A box containing the eye or crossing the near plane
+// answers visible without a query, as on every target. One query object per
+// pool slot, made in prepare() (and when the pool doubles), deleted with the
+// target. queryAvailable asks GL_QUERY_RESULT_AVAILABLE, queryResult
+// GL_QUERY_RESULT (it may wait for the GPU); the latency is 0 frames, since
+// end() finishes the frame's work.
 #pragma once
 #include <string>
 #include <unordered_map>
@@ -36,6 +48,10 @@ namespace gridcull {
 
 class GlImageTarget final : public ImageTarget {
 public:
+    GlImageTarget() = default;
+    GlImageTarget(const GlImageTarget&) = delete;
+    GlImageTarget& operator=(const GlImageTarget&) = delete;
+    ~GlImageTarget() override;
     // Compiles the shader and uploads the unit sphere and cube.
     bool init(std::string& error);
     void prepare(const Scene& scene) override;
@@ -46,7 +62,21 @@ public:
     double farthestDepth(const PixelRect& rect) const override;
     void end() override;
 
+    OcclusionQuery issueQuery(const Aabb& box) override;
+    bool queryAvailable(const OcclusionQuery& query) override;
+    bool queryResult(const OcclusionQuery& query) override;
+    int queryLatencyFrames() const override { return 0; }
+    OcclusionQueryCounts queryCounts() const override { return counts_; }
+    int outstandingQueries() const override { return queries_.outstanding(); }
+    void resetQueries() override { queries_.releaseAll(); }
+
 private:
+    struct GlQuery {
+        GLuint name = 0;       // the query object, 0 until made
+        bool trivial = false;  // answered visible without a query
+    };
+    // Makes the query objects of the slots that have none.
+    void makeQueryObjects();
     struct Mesh {
         GlVertexArray vao;
         GlBuffer vertices, indices;
@@ -66,6 +96,9 @@ private:
     double near_ = 0.1, far_ = 1000.0;
     int height_ = 0;
     mutable std::vector<float> depth_;
+    Camera camera_;
+    OcclusionQueryPool<GlQuery> queries_;
+    OcclusionQueryCounts counts_;
 };
 
 }  // namespace gridcull

@@ -9,7 +9,14 @@
 // which answers each query with a read-back as a GPU implementation would. A
 // family whose cullers take a target says so in its registry entry (draws_image),
 // and the app then offers each of its algorithms with OpenGL as NAME-gl.
+//
+// One target serves both kinds of image-space culler: pixel queries (countFree,
+// farthestDepth: the lazy occlusion grid reads pixels back) and occlusion
+// queries (culling/api/occlusion_queries.h: a box tested against the drawn
+// depth, answered later, as GL_ANY_SAMPLES_PASSED; Kovalčík & Sochor's BSP
+// traversal). A culler uses whichever it needs; the other costs nothing.
 #pragma once
+#include "culling/api/occlusion_queries.h"
 #include "culling/api/pixel_rect.h"
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
@@ -27,11 +34,12 @@ public:
     virtual double farthestDepth(const PixelRect& rect) const = 0;
 };
 
-class ImageTarget : public PixelQueries {
+class ImageTarget : public PixelQueries, public OcclusionQueries {
 public:
     // Starts a frame of width x height pixels seen by `camera`: every pixel free.
     // occlusion_bits: countFree will be asked (a target may keep a one-bit
-    // coverage buffer for it).
+    // coverage buffer for it). Occlusion queries issued in earlier frames stay
+    // outstanding; a frame is what queryLatencyFrames counts.
     virtual void begin(const Camera& camera, int width, int height, bool occlusion_bits) = 0;
     // Draws `object` (index `index` in the scene) moved by `shift`. Returns false
     // when it was rejected whole (nothing written); else sets `written` to the
@@ -40,7 +48,9 @@ public:
     virtual bool draw(const SceneObject& object, int index, const glm::dvec3& shift,
                       const PixelRect& image_area, PixelRect& written) = 0;
     // Called when the culler is reset for `scene`: size what draw needs for its
-    // meshes, so that draw never allocates.
+    // meshes and reserve the occlusion-query pool (kOcclusionQueryReserve), so
+    // that draw and issueQuery never allocate; forgets outstanding queries and
+    // zeroes the query counts.
     virtual void prepare(const Scene& scene) = 0;
     // The frame's last call: a target that queues work finishes it here, so that
     // the frame's time includes it.

@@ -197,12 +197,9 @@ bool IdDepthBuffer::drawSphere(int index, const glm::dvec3& center, double radiu
     return true;
 }
 
-bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
-    if (box.contains(eye_)) {
-        fillNear(index);
-        return true;
-    }
-    double z_min = std::numeric_limits<double>::infinity();
+bool IdDepthBuffer::boxCandidates(const Aabb& box, ScreenRange& cols, ScreenRange& rows,
+                                  double& z_min) const {
+    z_min = std::numeric_limits<double>::infinity();
     double z_max = -z_min;
     double u_lo = z_min, u_hi = z_max, v_lo = z_min, v_hi = z_max;
     glm::dvec3 corners[8];
@@ -234,34 +231,60 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
             extend(cut);
         }
     }
-    const ScreenRange cols = pixelRange(columnOf(u_lo), columnOf(u_hi), width_);
-    const ScreenRange rows = pixelRange(rowOf(v_hi), rowOf(v_lo), height_);
-    if (cols.empty() || rows.empty()) return false;
-    if (!mayBeNearer(cols, rows, std::max(z_min, near_))) return hiddenWhole();
-    boxPixels(index, box, std::max(z_min, near_), cols.lo, cols.hi, rows.lo, rows.hi);
-    refreshTiles();
-    return true;
+    cols = pixelRange(columnOf(u_lo), columnOf(u_hi), width_);
+    rows = pixelRange(rowOf(v_hi), rowOf(v_lo), height_);
+    z_min = std::max(z_min, near_);
+    return !cols.empty() && !rows.empty();
 }
 
-void IdDepthBuffer::boxPixels(int index, const Aabb& box, double z_min, int col_lo, int col_hi,
-                              int row_lo, int row_hi) {
-    for (int py = row_lo; py <= row_hi; ++py) {
+template <typename Visit>
+void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange& cols,
+                               const ScreenRange& rows, Visit&& visit) const {
+    for (int py = rows.lo; py <= rows.hi; ++py) {
         const glm::dvec3 row_dir = forward_ + row_v_[size_t(py)] * up_;
-        double* depth_row = depth_.data() + size_t(py) * size_t(width_);
-        int32_t* index_row = index_.data() + size_t(py) * size_t(width_);
-        forTileSegments(py, col_lo, col_hi, z_min, [&](int px) {
-            if (depth_row[px] <= z_min) return;
+        const double* depth_row = depth_.data() + size_t(py) * size_t(width_);
+        bool stop = false;
+        forTileSegments(py, cols.lo, cols.hi, z_min, [&](int px) {
+            if (stop || depth_row[px] <= z_min) return;
             const glm::dvec3 dir = row_dir + column_u_[size_t(px)] * right_;
             double s0, s1, s;
             if (!lineBox(eye_, dir, box, s0, s1)) return;
             if (!solidEntry(s0, s1, near_, far_, s)) return;
-            if (s < depth_row[px]) {
-                depth_row[px] = s;
-                index_row[px] = index;
-                markDirty(px, py);
-            }
+            if (s < depth_row[px]) stop = visit(px, py, s);
         });
+        if (stop) return;
     }
+}
+
+bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
+    if (box.contains(eye_)) {
+        fillNear(index);
+        return true;
+    }
+    ScreenRange cols, rows;
+    double z_min = 0.0;
+    if (!boxCandidates(box, cols, rows, z_min)) return false;
+    if (!mayBeNearer(cols, rows, z_min)) return hiddenWhole();
+    forBoxHits(box, z_min, cols, rows, [&](int px, int py, double s) {
+        const size_t p = size_t(py) * size_t(width_) + size_t(px);
+        depth_[p] = s;
+        index_[p] = index;
+        markDirty(px, py);
+        return false;
+    });
+    refreshTiles();
+    return true;
+}
+
+bool IdDepthBuffer::boxPassesDepthTest(const Aabb& box) const {
+    if (box.contains(eye_)) return true;
+    ScreenRange cols, rows;
+    double z_min = 0.0;
+    if (!boxCandidates(box, cols, rows, z_min)) return false;
+    if (!mayBeNearer(cols, rows, z_min)) return false;
+    bool passed = false;
+    forBoxHits(box, z_min, cols, rows, [&](int, int, double) { return passed = true; });
+    return passed;
 }
 
 void IdDepthBuffer::markVisible(std::vector<char>& seen) const {

@@ -92,6 +92,16 @@ public:
     // nothing and returns false).
     bool drawObject(int index, const SceneObject& object, const glm::dvec3& shift);
 
+    // The depth test alone, for occlusion queries (culling/api/occlusion_queries.h):
+    // does some pixel centre whose ray enters `box` at a depth s in [near, far]
+    // have s < its stored depth (+infinity where empty)? That is, would
+    // drawBox(box) write any pixel? Nothing is written. Parts of the box nearer
+    // than near are clipped as drawBox clips them; a box containing the eye passes
+    // (drawBox would fill the screen at near). Cost: O(pixels of the box's
+    // screen bound) at worst, stopping at the first passing pixel and skipping the
+    // tiles whose farthest depth is already nearer than the box.
+    bool boxPassesDepthTest(const Aabb& box) const;
+
     // Sets seen[index] = 1 for every index left in the buffer; seen must be large
     // enough for every index drawn. O(pixels).
     void markVisible(std::vector<char>& seen) const;
@@ -118,10 +128,16 @@ private:
         last_cols_ = last_rows_ = ScreenRange{};
         return true;
     }
-    // Writes the ray-box / ray-sphere solution per pixel over rows [row_lo, row_hi]
-    // and columns [col_lo, col_hi].
-    void boxPixels(int index, const Aabb& box, double z_min, int col_lo, int col_hi, int row_lo,
-                   int row_hi);
+    // The candidate pixels of `box` (the eye outside it) and the least depth of its
+    // part at depth >= near; false when it is rejected whole.
+    bool boxCandidates(const Aabb& box, ScreenRange& cols, ScreenRange& rows, double& z_min) const;
+    // Calls visit(px, py, s) for each candidate pixel whose ray enters `box` at a
+    // depth s in [near, far] nearer than the stored depth, row by row, until
+    // visit returns true. Shared by drawBox (which writes) and
+    // boxPassesDepthTest (which stops at the first).
+    template <typename Visit>
+    void forBoxHits(const Aabb& box, double z_min, const ScreenRange& cols, const ScreenRange& rows,
+                    Visit&& visit) const;
     // Rasterizes one view-space triangle with z >= near everywhere: depth-tested
     // into the buffer, or (parity) toggling parity_ without any depth test.
     void rasterTriangle(int index, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,

@@ -25,11 +25,17 @@ void SoftwareImageTarget::prepare(const Scene& scene) {
     for (const SceneObject& object : scene.objects)
         if (object.mesh) vertices = std::max(vertices, object.mesh->vertices.size());
     zbuffer_.reserveMeshVertices(vertices);
+    queries_.reserve(kOcclusionQueryReserve);
+    queries_.releaseAll();
+    counts_ = {};
 }
 
 void SoftwareImageTarget::begin(const Camera& camera, int width, int height, bool occlusion_bits) {
     zbuffer_.resize(width, height);
     zbuffer_.begin(camera);
+    camera_ = camera;
+    in_frame_ = true;
+    ++frame_;
     occlusion_bits_ = occlusion_bits;
     if (occlusion_bits) {
         obuffer_.resize(width, height);
@@ -44,6 +50,38 @@ bool SoftwareImageTarget::draw(const SceneObject& object, int index, const glm::
     written = {cols.lo, rows.lo, cols.hi, rows.hi};
     if (occlusion_bits_) obuffer_.markDrawn(zbuffer_, written);
     return true;
+}
+
+void SoftwareImageTarget::setQueryLatency(int frames) {
+    assert(frames >= 0);
+    latency_ = frames;
+}
+
+OcclusionQuery SoftwareImageTarget::issueQuery(const Aabb& box) {
+    assert(in_frame_ && "issueQuery between begin() and end()");
+    const OcclusionQuery query = queries_.acquire();
+    QueryAnswer& answer = queries_.payload(query);
+    ++counts_.issued;
+    if (occlusionQueryTriviallyVisible(camera_, box)) {
+        ++counts_.trivial;
+        answer.visible = true;
+    } else {
+        answer.visible = zbuffer_.boxPassesDepthTest(box);
+    }
+    answer.ready_frame = frame_ + latency_;
+    return query;
+}
+
+bool SoftwareImageTarget::queryAvailable(const OcclusionQuery& query) {
+    return frame_ >= queries_.payload(query).ready_frame;
+}
+
+bool SoftwareImageTarget::queryResult(const OcclusionQuery& query) {
+    const QueryAnswer answer = queries_.payload(query);
+    ++counts_.read;
+    if (frame_ < answer.ready_frame) ++counts_.stalled;
+    queries_.release(query);
+    return answer.visible;
 }
 
 }  // namespace gridcull

@@ -3,6 +3,13 @@
 // one-bit occlusion buffer (raster/occlusion_buffer.h) for countFree, both at
 // pixel centres, so that an image-space culler sees exactly the pixels the oracle
 // samples at the same resolution.
+//
+// Occlusion queries (culling/api/occlusion_queries.h) run the z-buffer's
+// depth-test-only pass (IdDepthBuffer::boxPassesDepthTest) at issue time, so
+// they are exact at the rasterizer's pixel centres: conservative with respect to
+// the exact oracle at the same resolution. Their answers are held back
+// setQueryLatency(n) frames (0 by default: available at once), so that a
+// culler can be tested against the latency of a GPU's queries.
 #pragma once
 #include <cstddef>
 
@@ -32,6 +39,7 @@ private:
 class SoftwareImageTarget final : public ImageTarget {
 public:
     void begin(const Camera& camera, int width, int height, bool occlusion_bits) override;
+    void end() override { in_frame_ = false; }
     bool draw(const SceneObject& object, int index, const glm::dvec3& shift,
               const PixelRect& image_area, PixelRect& written) override;
     long long countFree(const PixelRect& rect) const override { return pixels_.countFree(rect); }
@@ -40,11 +48,34 @@ public:
     }
     void prepare(const Scene& scene) override;
 
+    OcclusionQuery issueQuery(const Aabb& box) override;
+    bool queryAvailable(const OcclusionQuery& query) override;
+    bool queryResult(const OcclusionQuery& query) override;
+    int queryLatencyFrames() const override { return latency_; }
+    OcclusionQueryCounts queryCounts() const override { return counts_; }
+    int outstandingQueries() const override { return queries_.outstanding(); }
+    void resetQueries() override { queries_.releaseAll(); }
+    // Holds every answer back `frames` (>= 0) begin() calls after its issue.
+    void setQueryLatency(int frames);
+    // The query pool's slots (kOcclusionQueryReserve after prepare(); it doubles
+    // when more are outstanding).
+    int queryCapacity() const { return queries_.capacity(); }
+
 private:
+    struct QueryAnswer {
+        bool visible = true;
+        long long ready_frame = 0;  // available once frame_ >= ready_frame
+    };
     IdDepthBuffer zbuffer_;
     OcclusionBuffer obuffer_;
     bool occlusion_bits_ = false;
     SoftwarePixelQueries pixels_{&obuffer_, &zbuffer_};
+    Camera camera_;
+    bool in_frame_ = false;
+    long long frame_ = 0;  // begin() calls since construction
+    int latency_ = 0;
+    OcclusionQueryPool<QueryAnswer> queries_;
+    OcclusionQueryCounts counts_;
 };
 
 }  // namespace gridcull

@@ -41,10 +41,10 @@ TEST(Registry, UnknownNameIsAnErrorThatListsTheKnownOnes) {
 
 TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
     EXPECT_EQ(algorithmNames(2), (std::vector<std::string>{"all", "vfc", "exact", "rgvc"}));
-    EXPECT_EQ(algorithmNames(3),
-              (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z",
-                                        "busy-grid", "busy-grid-tight", "hzb-tbv", "hzb-tbvi",
-                                        "hzb"}));
+    EXPECT_EQ(
+        algorithmNames(3),
+        (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z",
+                                  "busy-grid", "busy-grid-tight", "hzb-tbv", "hzb-tbvi", "hzb"}));
     std::string why;
     EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));
     EXPECT_TRUE(algorithmFits("lazy-grid", test::scene3d(), why));
@@ -135,6 +135,13 @@ TEST(Registry, OnlyFamiliesThatDrawAnImageTakeATarget) {
         void prepare(const Scene&) override {}
         long long countFree(const PixelRect&) const override { return 0; }
         double farthestDepth(const PixelRect&) const override { return 0.0; }
+        OcclusionQuery issueQuery(const Aabb&) override { return {}; }
+        bool queryAvailable(const OcclusionQuery&) override { return true; }
+        bool queryResult(const OcclusionQuery&) override { return true; }
+        int queryLatencyFrames() const override { return 0; }
+        OcclusionQueryCounts queryCounts() const override { return {}; }
+        int outstandingQueries() const override { return 0; }
+        void resetQueries() override {}
     };
     EXPECT_EQ(makeCuller("vfc", KnobValues{}, error, std::make_unique<NoTarget>()), nullptr);
     EXPECT_NE(error.find("vfc draws no image"), std::string::npos) << error;
