@@ -142,6 +142,8 @@ void runGenerator(const GeneratorPlan& plan, size_t generator_index, Scene& scen
         generateRooms(*p, rng, scene, next_id);
     } else if (const auto* p = std::get_if<MeshCrowdParams>(&plan.params)) {
         generateMeshCrowd(*p, rng, out);
+    } else if (const auto* p = std::get_if<PlantParams>(&plan.params)) {
+        generatePlant(*p, rng, scene, next_id);
     }
 }
 

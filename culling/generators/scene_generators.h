@@ -56,6 +56,34 @@
 //   to kMeshCrowdScaleLevels levels evenly spread over `scale` (so copies share
 //   kMeshCrowdScaleLevels meshes at most), placed like sphere_cluster, each in
 //   linear motion with a speed uniform in [max_speed / 4, max_speed].
+// - plant (3D, an addition of ours standing in for Kovalcik & Sochor's power
+//   plant, scene_generators_plant.cpp): a dense static industrial site of many
+//   boxes and spheres whose sizes spread over more than two orders of magnitude.
+//   nx x nz square process units of unit_size with aisles of aisle_width
+//   between and around them, the whole site centred on the world in x and z
+//   and standing on world.min.y. Per unit, in this order:
+//   * tanks_per_unit tanks in the unit's back half (low z), one per cell of a
+//     grid of ceil(sqrt(n)) columns: a tall box (a column or vessel, square
+//     footprint 0.4..0.8 of the cell, height uniform in tank_height) or, one
+//     time in three, a spherical tank standing on the ground (radius 0.3..0.4
+//     of the cell's smaller side, at most half the drawn height);
+//   * platforms_per_unit platforms in the front half: a slab 0.25..0.5 x
+//     0.15..0.35 unit_size, as thick as the largest pipe, at a height uniform
+//     in [0.2, 0.8] tank_height[0], on four legs (boxes of the smallest pipe
+//     width) from the ground; five objects each;
+//   * pipes_per_unit pipes, each a box of square section (width uniform in
+//     pipe_width) along x, y or z (one in three each): a horizontal one 0.3..1
+//     unit_size long at one of four levels k / 5 * tank_height[0] (k = 1..4),
+//     a vertical one from the ground to such a level; each followed by its
+//     valves_per_pipe valves, cubes of 2.5 pipe widths centred on the pipe's
+//     axis at uniform points of it (kept off its ends);
+//   then rack_pipes pipes over every aisle between two units (not the outer
+//   ones), running the whole site's length at 0.85 tank_height[0], spread
+//   evenly across the aisle, widths uniform in pipe_width. Pipes and valves
+//   keep 1.25 pipe_width[1] off the unit's edges, so nothing leaves the unit
+//   (racks: the site); the loader checks that the site fits the world, that
+//   tank_height[1] fits its height and that pipe_width[1] < unit_size / 10 and
+//   < tank_height[0] / 10, so every object lies inside the world.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -130,8 +158,30 @@ struct MeshCrowdParams {
     std::vector<double> scales;
 };
 
-using GeneratorParams =
-    std::variant<SphereClusterParams, CityParams, ForestParams, RoomsParams, MeshCrowdParams>;
+constexpr int kMaxPlantUnitsPerAxis = 100;
+constexpr int kMaxPlantTanksPerUnit = 64;
+constexpr int kMaxPlantPipesPerUnit = 1000;
+constexpr int kMaxPlantValvesPerPipe = 16;
+constexpr int kMaxPlantPlatformsPerUnit = 16;
+constexpr int kMaxPlantRackPipes = 64;
+
+struct PlantParams {
+    int64_t units_x = 1, units_z = 1;
+    double unit_size = 30.0, aisle_width = 5.0;
+    double tank_height_min = 10.0, tank_height_max = 10.0;
+    int64_t tanks_per_unit = 0;
+    int64_t pipes_per_unit = 0;
+    double pipe_width_min = 0.2, pipe_width_max = 0.2;
+    int64_t valves_per_pipe = 0;
+    int64_t platforms_per_unit = 0;
+    int64_t rack_pipes = 0;
+};
+
+// How many objects `plant` makes (scene_generators.h, "plant").
+int64_t plantObjectCount(const PlantParams& p);
+
+using GeneratorParams = std::variant<SphereClusterParams, CityParams, ForestParams, RoomsParams,
+                                     MeshCrowdParams, PlantParams>;
 
 // A generator whose parameters have been checked; `count` is how many objects
 // it will make.
@@ -149,5 +199,9 @@ void runGenerator(const GeneratorPlan& plan, size_t generator_index, Scene& scen
 // The rooms layout (scene_generators_rooms.cpp): appends its objects to
 // scene.objects with ids from next_id on.
 void generateRooms(const RoomsParams& params, SeededRandom& rng, Scene& scene, int& next_id);
+
+// The plant layout (scene_generators_plant.cpp): appends plantObjectCount(params)
+// objects to scene.objects with ids from next_id on.
+void generatePlant(const PlantParams& params, SeededRandom& rng, Scene& scene, int& next_id);
 
 }  // namespace gridcull

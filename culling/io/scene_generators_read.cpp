@@ -1,5 +1,6 @@
 // Reading and checking the `generators` array (scene_generators.h). Nothing is
 // generated here, so the object-count limit can be checked first.
+#include <algorithm>
 #include <cmath>
 
 #include "culling/io/scene_loader.h"
@@ -272,6 +273,73 @@ bool readMeshCrowd(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan
     return good;
 }
 
+// The plant generator (scene_generators.h, "plant"): its sizes, and a site that
+// fits the world, so that every object lies inside it.
+bool readPlant(JsonObjectReader& g, SceneLoadContext& c, GeneratorPlan& plan) {
+    PlantParams p;
+    bool good = g.checkKeys(
+        {"type", "units", "unit_size", "aisle_width", "tank_height", "tanks_per_unit",
+         "pipes_per_unit", "pipe_width", "valves_per_pipe", "platforms_per_unit", "rack_pipes"},
+        "for generator 'plant'");
+    int64_t units[2] = {1, 1};
+    const bool units_ok = g.integers(
+        "units", true, 2, 1, kMaxPlantUnitsPerAxis,
+        "integers in [1, " + std::to_string(kMaxPlantUnitsPerAxis) + "] ([nx, nz])", units);
+    const bool unit_ok = g.number("unit_size", true, kPositive, p.unit_size);
+    const bool aisle_ok = g.number("aisle_width", true, kNonNegative, p.aisle_width);
+    const bool tank_ok =
+        g.range("tank_height", true, kPositive, p.tank_height_min, p.tank_height_max);
+    const bool pipe_ok = g.range("pipe_width", true, kPositive, p.pipe_width_min, p.pipe_width_max);
+    good = good && units_ok && unit_ok && aisle_ok && tank_ok && pipe_ok;
+    const auto count = [&](const char* key, int64_t limit, int64_t& out) {
+        return g.integer(key, true, 0, limit, "an integer in [0, " + std::to_string(limit) + "]",
+                         out);
+    };
+    good = count("tanks_per_unit", kMaxPlantTanksPerUnit, p.tanks_per_unit) && good;
+    good = count("pipes_per_unit", kMaxPlantPipesPerUnit, p.pipes_per_unit) && good;
+    good = count("valves_per_pipe", kMaxPlantValvesPerPipe, p.valves_per_pipe) && good;
+    good = count("platforms_per_unit", kMaxPlantPlatformsPerUnit, p.platforms_per_unit) && good;
+    good = count("rack_pipes", kMaxPlantRackPipes, p.rack_pipes) && good;
+    p.units_x = units[0];
+    p.units_z = units[1];
+    const Aabb& world = c.scene.grid.world;
+    if (units_ok && unit_ok && aisle_ok) {
+        for (int i = 0; i < 2; ++i) {
+            const int axis = i == 0 ? 0 : 2;
+            const double span = double(units[i]) * (p.unit_size + p.aisle_width) + p.aisle_width;
+            const double room = world.max[axis] - world.min[axis];
+            if (span <= room) continue;
+            c.errors.add(indexPath(g.pathOf("units"), size_t(i)),
+                         std::string("make the site ") + formatNumber(span) + " wide along " +
+                             (i == 0 ? "x" : "z") + ", more than the world's " +
+                             formatNumber(room) +
+                             " (units * (unit_size + aisle_width) + "
+                             "aisle_width must fit the world)");
+            good = false;
+        }
+    }
+    const double world_height = world.max.y - world.min.y;
+    if (tank_ok && p.tank_height_max > world_height) {
+        c.errors.add(indexPath(g.pathOf("tank_height"), 1),
+                     "must be at most the world's height " + formatNumber(world_height) + ", got " +
+                         formatNumber(p.tank_height_max));
+        good = false;
+    }
+    if (unit_ok && tank_ok && pipe_ok) {
+        const double limit = std::min(p.unit_size, p.tank_height_min) / 15.0;
+        if (!(p.pipe_width_max < limit)) {
+            c.errors.add(
+                indexPath(g.pathOf("pipe_width"), 1),
+                "must be less than min(unit_size, tank_height[0]) / 15 = " + formatNumber(limit) +
+                    " (pipes and valves must fit a unit), got " + formatNumber(p.pipe_width_max));
+            good = false;
+        }
+    }
+    plan.count = plantObjectCount(p);
+    plan.params = p;
+    return good;
+}
+
 }  // namespace
 
 void readGenerators(const Json& generators, SceneLoadContext& c, std::vector<GeneratorPlan>& out) {
@@ -289,7 +357,9 @@ void readGenerators(const Json& generators, SceneLoadContext& c, std::vector<Gen
             good = readSphereCluster(g, c, plan);
         } else if (type == "rooms") {
             good = readRooms(g, c, plan);
-        } else if ((type == "city" || type == "forest" || type == "mesh_crowd") && !is_3d) {
+        } else if ((type == "city" || type == "forest" || type == "mesh_crowd" ||
+                    type == "plant") &&
+                   !is_3d) {
             c.errors.add(g.pathOf("type"), "generator '" + type +
                                                "' does not exist in a 2D scene; must be "
                                                "sphere_cluster or rooms, got \"" +
@@ -300,10 +370,12 @@ void readGenerators(const Json& generators, SceneLoadContext& c, std::vector<Gen
             good = readForest(g, c, plan);
         } else if (type == "mesh_crowd") {
             good = readMeshCrowd(g, c, plan);
+        } else if (type == "plant") {
+            good = readPlant(g, c, plan);
         } else {
             c.errors.add(g.pathOf("type"),
                          std::string("must be one of sphere_cluster, rooms") +
-                             (is_3d ? ", city, forest, mesh_crowd" : " (the scene is 2D)") +
+                             (is_3d ? ", city, forest, mesh_crowd, plant" : " (the scene is 2D)") +
                              ", got " + describe(*g.find("type")));
         }
         if (good) out.push_back(std::move(plan));

@@ -251,7 +251,7 @@ TEST(SceneBspUpdate, BoxesOnTheSplitPlanes) {
         test::withSeed(seed, [&] {
             SeededRandom rng(seed);
             auto latticeBox = [&] {
-                glm::dvec3 lo, hi;
+                glm::dvec3 lo(0.0), hi(0.0);  // every axis is set below
                 for (int a = 0; a < 3; ++a) {
                     lo[a] = 0.5 * double(rng.below(40));
                     hi[a] = lo[a] + 0.5 * double(rng.below(3));
