@@ -20,10 +20,16 @@ BresenhamLine::BresenhamLine(glm::i64vec2 delta) : delta_(delta) {
 }
 
 BresenhamLine BresenhamLine::towards(double x, double y) {
+    // A NaN in either component (std::max would drop it) or an infinite one has
+    // no direction to keep: +x, like the zero direction.
+    if (!std::isfinite(x) || !std::isfinite(y)) return BresenhamLine({1, 0});
     const double m = std::max(std::abs(x), std::abs(y));
-    if (!(m > 0.0) || !std::isfinite(m)) return BresenhamLine({1, 0});
-    const double scale = double(1 << 24) / m;
-    return BresenhamLine({int64_t(std::llround(x * scale)), int64_t(std::llround(y * scale))});
+    if (!(m > 0.0)) return BresenhamLine({1, 0});
+    // Divide first, then scale: x / m is in [-1, 1] even for subnormal m, where
+    // 2^24 / m would overflow to infinity (as BresenhamLine3::towards).
+    const double scale = double(1 << 24);
+    return BresenhamLine(
+        {int64_t(std::llround(x / m * scale)), int64_t(std::llround(y / m * scale))});
 }
 
 glm::i64vec2 BresenhamLine::at(int64_t k) const {

@@ -23,8 +23,9 @@ class BresenhamLine {
 public:
     // delta == (0, 0) is taken as (1, 0).
     explicit BresenhamLine(glm::i64vec2 delta);
-    // The line towards a real direction (x, y), not both zero: the direction is
-    // scaled to integers of about 2^24 so the slope is kept to 24 bits.
+    // The line towards a real direction (x, y): the direction is scaled to
+    // integers of about 2^24 so the slope is kept to 24 bits, whatever its
+    // magnitude (subnormal to DBL_MAX); a zero, infinite or NaN component gives +x.
     static BresenhamLine towards(double x, double y);
 
     // Offset of the k-th voxel (k >= 0) from the start.
@@ -67,10 +68,18 @@ void bresenhamCircle4(int r, Visit&& visit) {
         while (!(x == 0 && y == r)) {
             // (x, y) rotated quadrant times by 90 degrees counter-clockwise.
             switch (quadrant) {
-            case 0: visit(x, y); break;
-            case 1: visit(-y, x); break;
-            case 2: visit(-x, -y); break;
-            default: visit(y, -x); break;
+                case 0:
+                    visit(x, y);
+                    break;
+                case 1:
+                    visit(-y, x);
+                    break;
+                case 2:
+                    visit(-x, -y);
+                    break;
+                default:
+                    visit(y, -x);
+                    break;
             }
             if (x == 0) {
                 ++y;
@@ -79,7 +88,10 @@ void bresenhamCircle4(int r, Visit&& visit) {
             } else {
                 const int64_t up = std::llabs(x * x + (y + 1) * (y + 1) - rr);
                 const int64_t left = std::llabs((x - 1) * (x - 1) + y * y - rr);
-                if (up <= left) ++y; else --x;
+                if (up <= left)
+                    ++y;
+                else
+                    --x;
             }
         }
     }

@@ -1,7 +1,9 @@
 #include "grid/bresenham.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <set>
 #include <utility>
 #include <vector>
@@ -52,6 +54,34 @@ TEST(BresenhamLine, SegmentVisitsBothEndsInOrder) {
     ASSERT_EQ(seen.size(), size_t(8));
     EXPECT_EQ(seen.front(), std::make_pair(int64_t(2), int64_t(3)));
     EXPECT_EQ(seen.back(), std::make_pair(int64_t(9), int64_t(-1)));
+}
+
+// As BresenhamLine3's: subnormal directions (2^24 / m alone overflows),
+// huge ones, and directions with no direction (zero, NaN, infinite) give +x.
+TEST(BresenhamLine, TowardsTinyHugeAndDegenerateDirections) {
+    const int64_t one = int64_t(1) << 24;
+    const double huge = DBL_MAX, tiny = std::numeric_limits<double>::denorm_min();
+    struct Case {
+        double x, y;
+        glm::i64vec2 delta;
+    };
+    const Case cases[] = {
+        {tiny, 0.0, {one, 0}},
+        {0.0, -tiny, {0, -one}},
+        {1e-310, -2e-310, {one / 2, -one}},
+        {1e-300, 3e-300, {std::llround(one / 3.0), one}},
+        {huge, -huge, {one, -one}},
+        {1e300, 1e-300, {one, 0}},
+        {0.0, 0.0, {1, 0}},
+        {std::nan(""), 1.0, {1, 0}},
+        {1.0, std::nan(""), {1, 0}},
+        {1.0, std::numeric_limits<double>::infinity(), {1, 0}},
+    };
+    for (const Case& c : cases) {
+        const BresenhamLine line = BresenhamLine::towards(c.x, c.y);
+        EXPECT_EQ(line.delta(), c.delta) << c.x << "," << c.y;
+        EXPECT_EQ(chessDistance(line.at(1000000)), 1000000);
+    }
 }
 
 TEST(BresenhamCircle4, ClosedFourConnectedSimpleAndNearTheRadius) {
