@@ -11,7 +11,7 @@
 // and the app then offers each of its algorithms with OpenGL as NAME-gl.
 //
 // One target serves both kinds of image-space culler: pixel queries (countFree,
-// farthestDepth: the lazy occlusion grid reads pixels back) and occlusion
+// farthestDepth: a culler that reads pixels back) and occlusion
 // queries (culling/api/occlusion_queries.h: a box tested against the drawn
 // depth, answered later, as GL_ANY_SAMPLES_PASSED; Kovalčík & Sochor's BSP
 // traversal). A culler uses whichever it needs; the other costs nothing.

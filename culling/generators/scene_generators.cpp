@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "culling/generators/scene_emitter.h"
 #include "culling/generators/scene_generators.h"
 #include "culling/scene/seeded_random.h"
 
@@ -12,15 +13,7 @@ namespace gridcull {
 
 namespace {
 
-struct Emitter {
-    Scene& scene;
-    int& next_id;
-    void add(SceneObject o) {
-        o.id = next_id++;
-        computeAnchorAndBounds(o, scene.dimensions);
-        scene.objects.push_back(std::move(o));
-    }
-};
+using Emitter = SceneEmitter;
 
 SceneObject makeSphere(const glm::dvec3& center, double radius) {
     SceneObject o;

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "culling/generators/scene_emitter.h"
 #include "culling/generators/scene_generators.h"
 #include "culling/scene/seeded_random.h"
 
@@ -15,28 +16,7 @@ namespace gridcull {
 
 namespace {
 
-struct PlantEmitter {
-    Scene& scene;
-    int& next_id;
-    void add(SceneObject o) {
-        o.id = next_id++;
-        computeAnchorAndBounds(o, scene.dimensions);
-        scene.objects.push_back(std::move(o));
-    }
-    void addBox(const Aabb& box) {
-        SceneObject o;
-        o.shape = ShapeKind::Box;
-        o.box = box;
-        add(std::move(o));
-    }
-    void addSphere(const glm::dvec3& center, double radius) {
-        SceneObject o;
-        o.shape = ShapeKind::Sphere;
-        o.center = center;
-        o.radius = radius;
-        add(std::move(o));
-    }
-};
+using PlantEmitter = SceneEmitter;
 
 // A box of square section `width` around the segment from `from` to `to`,
 // which differ on one axis only.

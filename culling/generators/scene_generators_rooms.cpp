@@ -7,6 +7,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "culling/generators/scene_emitter.h"
 #include "culling/generators/scene_generators.h"
 #include "culling/scene/scene_limits.h"
 #include "culling/scene/seeded_random.h"
@@ -36,21 +37,7 @@ struct Plan {
     }
 };
 
-struct RoomsEmitter {
-    Scene& scene;
-    int& next_id;
-    void add(SceneObject o) {
-        o.id = next_id++;
-        computeAnchorAndBounds(o, scene.dimensions);
-        scene.objects.push_back(std::move(o));
-    }
-    void addBox(const Aabb& box) {
-        SceneObject o;
-        o.shape = ShapeKind::Box;
-        o.box = box;
-        add(std::move(o));
-    }
-};
+using RoomsEmitter = SceneEmitter;
 
 // A point on the square loop of half-size `half` around `centre`, at arc
 // length `u` (any real; the loop has length 8 * half) counter-clockwise from
