@@ -91,6 +91,7 @@ void GlImageTarget::prepare(const Scene& scene) {
     makeQueryObjects();
     counts_ = {};
     meshes_.clear();
+    triangle_sets_.clear();
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh || meshes_.count(object.mesh.get())) continue;
         std::vector<float> positions;
@@ -157,6 +158,39 @@ bool GlImageTarget::draw(const SceneObject& object, int, const glm::dvec3& shift
         case ShapeKind::Polygon:
             return false;
     }
+    written = image_area;
+    return !image_area.empty();
+}
+
+int GlImageTarget::addTriangleSet(const std::vector<glm::dvec3>& corners) {
+    TriangleSet set;
+    set.vao = makeGlVertexArray();
+    set.vertices = makeGlBuffer();
+    std::vector<float> positions;
+    positions.reserve(corners.size() * 3);
+    for (const glm::dvec3& v : corners)
+        positions.insert(positions.end(), {float(v.x), float(v.y), float(v.z)});
+    glBindVertexArray(set.vao.get());
+    glBindBuffer(GL_ARRAY_BUFFER, set.vertices.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(positions.size() * sizeof(float)), positions.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    glBindVertexArray(0);
+    set.triangle_count = int(corners.size() / 3);
+    triangle_sets_.push_back(std::move(set));
+    return int(triangle_sets_.size()) - 1;
+}
+
+bool GlImageTarget::drawTriangles(int handle, int first, int count, int, const glm::dvec3& shift,
+                                  const PixelRect& image_area, PixelRect& written) {
+    if (handle < 0 || size_t(handle) >= triangle_sets_.size() || count <= 0) return false;
+    const TriangleSet& set = triangle_sets_[size_t(handle)];
+    if (first < 0 || first + count > set.triangle_count) return false;
+    const glm::mat4 mvp = view_projection_ * glm::translate(glm::mat4(1.0f), glm::vec3(shift));
+    glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(mvp));
+    glBindVertexArray(set.vao.get());
+    glDrawArrays(GL_TRIANGLES, 3 * first, 3 * count);
     written = image_area;
     return !image_area.empty();
 }

@@ -61,6 +61,9 @@ public:
     long long countFree(const PixelRect& rect) const override;
     double farthestDepth(const PixelRect& rect) const override;
     void end() override;
+    int addTriangleSet(const std::vector<glm::dvec3>& corners) override;
+    bool drawTriangles(int handle, int first, int count, int index, const glm::dvec3& shift,
+                       const PixelRect& image_area, PixelRect& written) override;
 
     OcclusionQuery issueQuery(const Aabb& box) override;
     bool queryAvailable(const OcclusionQuery& query) override;
@@ -83,6 +86,12 @@ private:
         int index_count = 0;
     };
     Mesh upload(const std::vector<float>& positions, const std::vector<uint32_t>& indices);
+    // A triangle set: one vertex buffer, three vertices a triangle, drawn by ranges.
+    struct TriangleSet {
+        GlVertexArray vao;
+        GlBuffer vertices;
+        int triangle_count = 0;
+    };
     // Reads `rect`'s depths into depth_ (row-major, any order) and returns their count.
     size_t readDepths(const PixelRect& rect) const;
     void drawMesh(const Mesh& mesh, const glm::mat4& model);
@@ -91,6 +100,7 @@ private:
     GLint mvp_location_ = -1;
     Mesh sphere_, cube_;
     std::unordered_map<const TriangleMesh*, Mesh> meshes_;
+    std::vector<TriangleSet> triangle_sets_;  // by handle
     OffscreenTarget framebuffer_;
     glm::mat4 view_projection_{1.0f};
     double near_ = 0.1, far_ = 1000.0;

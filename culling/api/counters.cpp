@@ -44,6 +44,17 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
     {Counter::OctreeUpdateNodes, "octree_update_nodes",
      "octree nodes read, made or freed while moving objects and TBVs in the octree (the "
      "work the update under the least common ancestor saves)"},
+    {Counter::OcclusionQueries, "occlusion_queries",
+     "occlusion queries issued to the image (GL_ANY_SAMPLES_PASSED on a GPU): a box drawn "
+     "against the depth so far, its answer read later"},
+    {Counter::QueryBatches, "query_batches",
+     "batches of occlusion queries issued before their answers were read (boxes whose "
+     "screen rectangles do not overlap)"},
+    {Counter::CoherenceSkips, "coherence_skips",
+     "nodes assumed visible without a query because they were visible recently (temporal "
+     "coherence)"},
+    {Counter::PartsDrawn, "parts_drawn",
+     "object parts drawn: whole objects, and leaves of objects' own BSP trees"},
 }};
 
 constexpr bool inCounterOrder() {

@@ -39,6 +39,10 @@ enum class Counter : uint8_t {
     StateFetches,
     TbvMessages,
     OctreeUpdateNodes,
+    OcclusionQueries,
+    QueryBatches,
+    CoherenceSkips,
+    PartsDrawn,
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

@@ -15,7 +15,18 @@
 // queries (culling/api/occlusion_queries.h: a box tested against the drawn
 // depth, answered later, as GL_ANY_SAMPLES_PASSED; Kovalčík & Sochor's BSP
 // traversal). A culler uses whichever it needs; the other costs nothing.
+//
+// Parts of objects. Besides whole scene objects, a target draws ranges of
+// triangle sets: a culler that splits objects into parts (the triangles of an
+// object's BSP leaf, Kovalčík & Sochor section 3.1) registers each set once,
+// in object space, after prepare(), and draws a part as a range of it moved by
+// the object's translation. On a GPU a set is one vertex buffer, a part one
+// draw call.
 #pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
 #include "culling/api/occlusion_queries.h"
 #include "culling/api/pixel_rect.h"
 #include "culling/scene/camera.h"
@@ -55,6 +66,20 @@ public:
     // The frame's last call: a target that queues work finishes it here, so that
     // the frame's time includes it.
     virtual void end() {}
+
+    // Registers a triangle set: corners.size() / 3 triangles, three corners
+    // each, in object space (corners.size() a multiple of 3). Returns its
+    // handle, valid until the next prepare(). Allocates (and on a GPU uploads):
+    // call it when the culler is reset, never per frame.
+    virtual int addTriangleSet(const std::vector<glm::dvec3>& corners) = 0;
+    // Draws triangles [first, first + count) of set `handle`, each corner moved
+    // by `shift`, writing `index` as draw() does. Returns false when nothing
+    // could be written (the range is empty, or outside [near, far]); else sets
+    // `written` to the pixels it may have written, at most `image_area` for a
+    // target that cannot tell. Never allocates.
+    virtual bool drawTriangles(int handle, int first, int count, int index,
+                               const glm::dvec3& shift, const PixelRect& image_area,
+                               PixelRect& written) = 0;
 };
 
 }  // namespace gridcull

@@ -80,6 +80,7 @@ int SceneBsp::allocNode() {
     n = Node();
     n.in_noted_list = in_list;
     n.live = true;
+    n.serial = ++serial_;
     ++live_nodes_;
     return index;
 }

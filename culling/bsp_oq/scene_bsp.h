@@ -172,6 +172,10 @@ public:
     int nodeDepth(int node) const { return at(node).depth; }
     int nodeObjectCount(int node) const { return at(node).object_count; }
     int nodeSubtreeObjects(int node) const { return at(node).subtree_objects; }
+    // Which allocation of its pool slot the node is (every allocNode numbers
+    // anew): a culler keeping per-node state by index tells a rebuilt node from
+    // the one that had its slot before.
+    uint32_t nodeSerial(int node) const { return at(node).serial; }
     // fn(object id) for the objects tied to `node`, in no particular order.
     template <typename Fn>
     void forEachObjectOf(int node, Fn&& fn) const {
@@ -216,6 +220,7 @@ private:
         int noted_frame = -1;  // frame it was found out of shape, -1: not
         bool in_noted_list = false;
         bool live = false;
+        uint32_t serial = 0;
         int next_free = kNone;
     };
     struct ObjectRecord {
@@ -287,6 +292,7 @@ private:
     std::vector<Node> nodes_;
     int free_head_ = kNone;
     int live_nodes_ = 0;
+    uint32_t serial_ = 0;
     std::vector<ObjectRecord> objects_;  // by id
     std::vector<int> next_in_node_;      // by id
     std::vector<int> prev_in_node_;

@@ -87,6 +87,11 @@ public:
     // mesh.vertices[i] + offset are the world positions (offset = the object's
     // center plus its displacement).
     bool drawMesh(int index, const TriangleMesh& mesh, const glm::dvec3& offset);
+    // `triangles` triangles of three corners each (corners[3t..3t+2]) + offset,
+    // as an open surface (no near-plane fill: a part of a mesh is not closed).
+    // Cost: O(triangles + pixels of their screen bounds).
+    bool drawTriangles(int index, const glm::dvec3* corners, size_t triangles,
+                       const glm::dvec3& offset);
 
     // The scene object moved by `shift`, by its shape (a polygon, 2D only, draws
     // nothing and returns false).

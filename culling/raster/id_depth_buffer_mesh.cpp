@@ -94,6 +94,26 @@ bool IdDepthBuffer::drawMesh(int index, const TriangleMesh& mesh, const glm::dve
     return true;
 }
 
+bool IdDepthBuffer::drawTriangles(int index, const glm::dvec3* corners, size_t triangles,
+                                  const glm::dvec3& offset) {
+    if (triangles == 0) return false;
+    Aabb bounds{corners[0], corners[0]};
+    for (size_t k = 1; k < 3 * triangles; ++k) bounds.merge({corners[k], corners[k]});
+    bounds = bounds.translated(offset);
+    const double z_min = minDepthOfBox(bounds);
+    const double z_max = 2.0 * glm::dot(bounds.center() - eye_, forward_) - z_min;
+    if (z_min > far_ || z_max < near_) return false;
+    glm::dvec3 tri[3];
+    for (size_t t = 0; t < triangles; ++t) {
+        for (int corner = 0; corner < 3; ++corner)
+            tri[corner] = toView(corners[3 * t + size_t(corner)] + offset);
+        if (tri[0].z > far_ && tri[1].z > far_ && tri[2].z > far_) continue;
+        clipAndRaster(index, tri, false);
+    }
+    refreshTiles();
+    return true;
+}
+
 void IdDepthBuffer::clipAndRaster(int index, const glm::dvec3 tri[3], bool parity) {
     glm::dvec3 poly[4];
     int count = 0;

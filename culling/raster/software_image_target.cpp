@@ -28,6 +28,28 @@ void SoftwareImageTarget::prepare(const Scene& scene) {
     queries_.reserve(kOcclusionQueryReserve);
     queries_.releaseAll();
     counts_ = {};
+    triangle_sets_.clear();
+}
+
+int SoftwareImageTarget::addTriangleSet(const std::vector<glm::dvec3>& corners) {
+    assert(corners.size() % 3 == 0);
+    triangle_sets_.push_back(corners);
+    return int(triangle_sets_.size()) - 1;
+}
+
+bool SoftwareImageTarget::drawTriangles(int handle, int first, int count, int index,
+                                        const glm::dvec3& shift, const PixelRect& /*image_area*/,
+                                        PixelRect& written) {
+    assert(handle >= 0 && size_t(handle) < triangle_sets_.size() && "not a triangle set");
+    const std::vector<glm::dvec3>& corners = triangle_sets_[size_t(handle)];
+    assert(first >= 0 && count >= 0 && size_t(first + count) * 3 <= corners.size());
+    if (count <= 0) return false;
+    if (!zbuffer_.drawTriangles(index, corners.data() + 3 * size_t(first), size_t(count), shift))
+        return false;
+    const ScreenRange cols = zbuffer_.lastDrawCols(), rows = zbuffer_.lastDrawRows();
+    written = {cols.lo, rows.lo, cols.hi, rows.hi};
+    if (occlusion_bits_) obuffer_.markDrawn(zbuffer_, written);
+    return true;
 }
 
 void SoftwareImageTarget::begin(const Camera& camera, int width, int height, bool occlusion_bits) {

@@ -12,6 +12,7 @@
 // culler can be tested against the latency of a GPU's queries.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -47,6 +48,9 @@ public:
         return pixels_.farthestDepth(rect);
     }
     void prepare(const Scene& scene) override;
+    int addTriangleSet(const std::vector<glm::dvec3>& corners) override;
+    bool drawTriangles(int handle, int first, int count, int index, const glm::dvec3& shift,
+                       const PixelRect& image_area, PixelRect& written) override;
 
     OcclusionQuery issueQuery(const Aabb& box) override;
     bool queryAvailable(const OcclusionQuery& query) override;
@@ -76,6 +80,7 @@ private:
     int latency_ = 0;
     OcclusionQueryPool<QueryAnswer> queries_;
     OcclusionQueryCounts counts_;
+    std::vector<std::vector<glm::dvec3>> triangle_sets_;  // by handle
 };
 
 }  // namespace gridcull

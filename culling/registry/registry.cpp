@@ -2,6 +2,7 @@
 #include "culling/registry/registry.h"
 
 #include "culling/baseline/baseline_family.h"
+#include "culling/bsp_oq/bsp_oq_family.h"
 #include "culling/hzb_tbv/hzb_tbv_family.h"
 #include "culling/lazy_grid/lazy_grid_family.h"
 #include "culling/oracle/oracle_family.h"
@@ -12,7 +13,8 @@ namespace gridcull {
 namespace {
 
 std::vector<FamilyEntry> builtInFamilies() {
-    return {baselineFamily(), oracleFamily(), rgvcFamily(), lazyGridFamily(), hzbTbvFamily()};
+    return {baselineFamily(), oracleFamily(), rgvcFamily(), lazyGridFamily(), hzbTbvFamily(),
+            bspOqFamily()};
 }
 
 // The window starts with regular-grid culling: it runs on 2D and 3D scenes and

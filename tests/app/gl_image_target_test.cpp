@@ -274,11 +274,12 @@ TEST(GlImageTarget, OcclusionQueriesPollAndGrowThePool) {
 TEST(GlImageTarget, BenchAndCullKnowTheGlNamesTheWindowDoesNot) {
     const std::vector<std::string> all = appAlgorithmNames();
     const std::vector<std::string> core = algorithmNames();
-    EXPECT_EQ(all.size(), core.size() + 4);
+    EXPECT_EQ(all.size(), core.size() + 4 + 3);  // the lazy grids' four, the BSP modes' three
     EXPECT_NE(std::find(all.begin(), all.end(), "busy-grid-gl"), all.end());
     EXPECT_EQ(std::find(all.begin(), all.end(), "vfc-gl"), all.end());
     EXPECT_EQ(std::find(core.begin(), core.end(), "busy-grid-gl"), core.end());
     EXPECT_EQ(registryAlgorithmOf("busy-grid-gl"), "busy-grid");
+    EXPECT_EQ(registryAlgorithmOf("bsp-oq-simple-gl"), "bsp-oq-simple");
     EXPECT_EQ(registryAlgorithmOf("rgvc"), "rgvc");
     EXPECT_EQ(registryAlgorithmOf("rgvc-gl"), "");
 }

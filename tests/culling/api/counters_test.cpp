@@ -20,7 +20,8 @@ TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
         "object_updates", "pixel_queries",  "nodes_visited",    "triangles_drawn",
         "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
         "cell_updates",   "bvh_rebuilds",   "probability_skips", "state_fetches",
-        "tbv_messages",   "octree_update_nodes"};
+        "tbv_messages",   "octree_update_nodes", "occlusion_queries", "query_batches",
+        "coherence_skips", "parts_drawn"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {

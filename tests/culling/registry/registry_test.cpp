@@ -18,7 +18,8 @@ TEST(Registry, MakesEveryListedCullerUnderItsName) {
     const std::vector<std::string> names = algorithmNames();
     EXPECT_EQ(names, (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid",
                                                "lazy-grid-z", "busy-grid", "busy-grid-tight",
-                                               "hzb-tbv", "hzb-tbvi", "hzb"}));
+                                               "hzb-tbv", "hzb-tbvi", "hzb", "bsp-oq",
+                                               "bsp-oq-simple", "bsp-vfc"}));
     for (const std::string& name : names) {
         std::string error;
         auto culler = makeCuller(name, KnobValues{}, error);
@@ -44,7 +45,8 @@ TEST(Registry, SaysWhichDimensionsEachAlgorithmRunsOn) {
     EXPECT_EQ(
         algorithmNames(3),
         (std::vector<std::string>{"all", "vfc", "exact", "rgvc", "lazy-grid", "lazy-grid-z",
-                                  "busy-grid", "busy-grid-tight", "hzb-tbv", "hzb-tbvi", "hzb"}));
+                                  "busy-grid", "busy-grid-tight", "hzb-tbv", "hzb-tbvi", "hzb",
+                                  "bsp-oq", "bsp-oq-simple", "bsp-vfc"}));
     std::string why;
     EXPECT_TRUE(algorithmFits("vfc", test::scene2d(), why));
     EXPECT_TRUE(algorithmFits("lazy-grid", test::scene3d(), why));
@@ -142,6 +144,11 @@ TEST(Registry, OnlyFamiliesThatDrawAnImageTakeATarget) {
         OcclusionQueryCounts queryCounts() const override { return {}; }
         int outstandingQueries() const override { return 0; }
         void resetQueries() override {}
+        int addTriangleSet(const std::vector<glm::dvec3>&) override { return 0; }
+        bool drawTriangles(int, int, int, int, const glm::dvec3&, const PixelRect&,
+                           PixelRect&) override {
+            return false;
+        }
     };
     EXPECT_EQ(makeCuller("vfc", KnobValues{}, error, std::make_unique<NoTarget>()), nullptr);
     EXPECT_NE(error.find("vfc draws no image"), std::string::npos) << error;
