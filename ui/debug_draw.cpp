@@ -56,6 +56,20 @@ void DebugDraw::dashedRect(DrawSpace space, double x0, double y0, double x1, dou
     dashes(*this, space, x0, y1, x0, y0, paint, width, dash, gap);
 }
 
+void DebugDraw::wireBox(const glm::dvec3& lo, const glm::dvec3& hi, Paint paint, float width) {
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (int k = 0; k < 4; ++k) {
+            glm::dvec3 p = lo;
+            p[b] = (k & 1) ? hi[b] : lo[b];
+            p[c] = (k & 2) ? hi[c] : lo[c];
+            glm::dvec3 q = p;
+            q[a] = hi[a];
+            line(DrawSpace::World, p, q, paint, width);
+        }
+    }
+}
+
 void DebugDraw::hatchRect(DrawSpace space, double x0, double y0, double x1, double y1, Paint paint,
                           float width, double spacing) {
     const double w = x1 - x0, h = y1 - y0;

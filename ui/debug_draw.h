@@ -78,6 +78,9 @@ public:
                         float width);
     // Voxel (x, y) of a 2D grid, filled (World space).
     void fillVoxel(const RegularGrid& grid, int x, int y, Paint paint);
+    // The twelve edges of the axis-aligned box [lo, hi] (World space): tree
+    // nodes, bounding volumes, highlighted voxels of the 3D overlays.
+    void wireBox(const glm::dvec3& lo, const glm::dvec3& hi, Paint paint, float width);
 };
 
 // A DebugDraw that keeps what was emitted, per space and in draw order, for the

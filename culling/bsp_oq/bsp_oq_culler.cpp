@@ -111,8 +111,9 @@ void BspOqCuller::reset(const Scene& scene) {
 }
 
 BspOqCuller::SceneNodeState& BspOqCuller::sceneState(int node) {
-    if (size_t(node) >= scene_states_.size())  // the pool grew past reserve()
-        scene_states_.resize(size_t(scene_tree_.poolCapacity()));
+    // Sized after each update (updateSceneTree), so references into it stay
+    // valid through the frame's traversal.
+    assert(size_t(node) < scene_states_.size());
     SceneNodeState& s = scene_states_[size_t(node)];
     const uint32_t serial = scene_tree_.nodeSerial(node);
     if (s.serial != serial) {  // a node the lazy reconstruction made anew
@@ -149,6 +150,8 @@ void BspOqCuller::updateSceneTree(double t) {
         if (tree_of_[i] >= 0) translation_[i] = objectTranslationAt(scene, scene.objects[i], t);
     }
     const SceneBspCost cost = scene_tree_.update(boxes_, int(frame_));
+    if (scene_states_.size() < size_t(scene_tree_.poolSize()))  // the pool grew past reserve()
+        scene_states_.resize(size_t(scene_tree_.poolCapacity()));
     for (int i : moved_) markChanged(scene_tree_.nodeOf(i));
     out_->stats.set(Counter::ObjectUpdates, cost.objects_relinked);
     if (stack_.capacity() < size_t(scene_tree_.poolCapacity()) + object_states_.size() + 1)

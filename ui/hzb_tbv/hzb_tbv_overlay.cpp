@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include "ui/hzb_tbv/hzb_wire_box.h"
 
 namespace gridcull {
 
@@ -17,9 +16,9 @@ int drawNodes(const HzbTbvSnapshot& s, const HzbTbvViewState& view, DebugDraw& d
         if (!view.shown(node.outcome)) continue;
         if (drawn == kHzbMaxNodesDrawn) break;
         ++drawn;
-        drawHzbWireBox(draw, node.box,
-                       {hzbNodeOutcomeSwatch(node.outcome), hzbNodeOutcomeAlpha(node.outcome)},
-                       hzbNodeOutcomeWidth(node.outcome));
+        draw.wireBox(node.box.min, node.box.max,
+                     {hzbNodeOutcomeSwatch(node.outcome), hzbNodeOutcomeAlpha(node.outcome)},
+                     hzbNodeOutcomeWidth(node.outcome));
     }
     return drawn;
 }
@@ -30,8 +29,9 @@ int drawTbvs(const HzbTbvSnapshot& s, int focus_object, DebugDraw& draw) {
         if (!o.has_tbv) continue;
         ++drawn;
         const bool focused = o.object_index == focus_object;
-        drawHzbWireBox(draw, o.tbv, {hzbTbvBandSwatch(hzbTbvBandOf(o)), focused ? 1.0f : kTbvAlpha},
-                       focused ? kHzbFocusedTbvWidth : kHzbTbvWidth);
+        draw.wireBox(o.tbv.min, o.tbv.max,
+                     {hzbTbvBandSwatch(hzbTbvBandOf(o)), focused ? 1.0f : kTbvAlpha},
+                     focused ? kHzbFocusedTbvWidth : kHzbTbvWidth);
     }
     return drawn;
 }

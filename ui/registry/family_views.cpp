@@ -2,6 +2,7 @@
 #include "ui/registry/family_views.h"
 
 #include "culling/registry/registry.h"
+#include "ui/bsp_oq/bsp_oq_family_view.h"
 #include "ui/hzb_tbv/hzb_tbv_family_view.h"
 #include "ui/lazy_grid/lazy_grid_family_view.h"
 #include "ui/rgvc/rgvc_family_view.h"
@@ -11,7 +12,7 @@ namespace gridcull {
 namespace {
 
 std::vector<FamilyViewEntry> builtInViews() {
-    return {rgvcFamilyView(), lazyGridFamilyView(), hzbTbvFamilyView()};
+    return {rgvcFamilyView(), lazyGridFamilyView(), hzbTbvFamilyView(), bspOqFamilyView()};
 }
 
 struct Table {

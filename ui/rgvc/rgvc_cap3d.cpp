@@ -10,7 +10,6 @@
 
 #include "culling/rgvc/rgvc_occlusion3d.h"
 #include "ui/rgvc/rgvc_history.h"
-#include "ui/rgvc/rgvc_wire_box.h"
 
 namespace gridcull {
 
@@ -151,9 +150,9 @@ void drawRgvcCap3d(const RgvcSnapshot& s, const RgvcViewState& view, const RgvcC
     if (view.shown(RgvcLayer::PickedOccluder)) {
         const Paint paint{rgvcLayerSwatch(RgvcLayer::PickedOccluder), 1.0f};
         const Aabb box = s.grid.voxelBounds(occ.voxel);
-        drawRgvcWireBox(draw, box.min, box.max, paint, kHeavyLine);
+        draw.wireBox(box.min, box.max, paint, kHeavyLine);
         const glm::dvec3 d = s.grid.voxelSize();
-        drawRgvcWireBox(draw, box.min - d, box.max + d, paint, kFineLine);
+        draw.wireBox(box.min - d, box.max + d, paint, kFineLine);
         const RgvcDirectionMap* map = s.direction_map;
         if (map && map->resolution() > 0) {
             const size_t r = size_t(map->resolution());

@@ -9,7 +9,6 @@
 #include <glm/matrix.hpp>
 
 #include "ui/rgvc/rgvc_slice.h"
-#include "ui/rgvc/rgvc_wire_box.h"
 
 namespace gridcull {
 
@@ -39,7 +38,7 @@ void drawShell(const RgvcSnapshot& s, const RgvcViewState& view, int64_t k, Debu
     if (lo.x >= hi.x || lo.y >= hi.y || lo.z >= hi.z) return;
     const Paint paint{rgvcLayerSwatch(RgvcLayer::CurrentLayer), 1.0f};
     if (view.mode == RgvcVoxelMode::Boxes) {
-        drawRgvcWireBox(draw, cornerOf(s.grid, lo), cornerOf(s.grid, hi), paint, kBoldLine);
+        draw.wireBox(cornerOf(s.grid, lo), cornerOf(s.grid, hi), paint, kBoldLine);
         return;
     }
     // The shell's cross-section with the slice, on the slice's plane.
@@ -63,10 +62,10 @@ void drawSeed(const RgvcSnapshot& s, int64_t k, DebugDraw& draw) {
         if (seed.layer != k) continue;
         const glm::i64vec3 v(seed.voxel.x, seed.voxel.y, seed.z);
         const glm::dvec3 lo = cornerOf(s.grid, v), hi = cornerOf(s.grid, v + int64_t(1));
-        drawRgvcWireBox(draw, lo, hi, white, kHeavyLine);
+        draw.wireBox(lo, hi, white, kHeavyLine);
         // A box two voxels out, so the seed is findable when a voxel is a few pixels.
         const glm::dvec3 d = s.grid.voxelSize();
-        drawRgvcWireBox(draw, lo - 2.0 * d, hi + 2.0 * d, white, kFineLine);
+        draw.wireBox(lo - 2.0 * d, hi + 2.0 * d, white, kFineLine);
     }
 }
 

@@ -362,7 +362,7 @@ TEST(ObjectBspBuild, BunnyKeepsItsTriangles) {
                     glm::dvec3(0.0));
     ASSERT_TRUE(loaded.mesh) << loaded.error;
     const TriangleMesh& mesh = *loaded.mesh;
-    for (int threshold : {1, 8, 64, 100000}) {
+    for (int threshold : {1, 8, 64, 256, 100000}) {  // 256: --bsp-leaf-triangles' default
         SCOPED_TRACE("threshold " + std::to_string(threshold));
         ObjectBspParams params;
         params.max_leaf_triangles = threshold;
