@@ -219,6 +219,19 @@ void BspOqCuller::setState(NodeState& s, BspNodeState state) {
 
 BspOqCuller::Estimate BspOqCuller::firstVisibilityTest(const ActiveNode& n, PixelRect& rect) {
     NodeState& s = stateOf(n);
+    if (s.need_query_frame == frame_) {  // it waited for a batch: nothing has changed
+        rect = s.rect;
+        return Estimate::NeedQuery;
+    }
+    const Estimate estimate = estimateAfresh(n, s, rect);
+    if (estimate == Estimate::NeedQuery) {
+        s.need_query_frame = frame_;
+        s.rect = rect;
+    }
+    return estimate;
+}
+
+BspOqCuller::Estimate BspOqCuller::estimateAfresh(const ActiveNode& n, NodeState& s, PixelRect& rect) {
     if (nodeEmpty(n)) {
         setState(s, BspNodeState::Empty);
         return Estimate::Invisible;

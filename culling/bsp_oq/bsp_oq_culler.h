@@ -127,6 +127,10 @@ private:
         bool shrunk = false;
         int32_t query = -1;  // index into query_log_ (capture only)
         Aabb box;
+        // The frame it was last estimated NeedQuery in, and its rectangle then:
+        // a node waiting for a batch's answers is not estimated again.
+        int64_t need_query_frame = -1;
+        PixelRect rect;
     };
     struct SceneNodeState {
         NodeState node;
@@ -150,7 +154,10 @@ private:
     Aabb testBox(const ActiveNode& n, bool& shrunk);
     Aabb tightBox(int node);
     bool nodeEmpty(const ActiveNode& n) const;
+    // Algorithm 3 (once a frame for a node that needs a query: a node that
+    // waits for a batch keeps its estimate and rectangle).
     Estimate firstVisibilityTest(const ActiveNode& n, PixelRect& rect);
+    Estimate estimateAfresh(const ActiveNode& n, NodeState& s, PixelRect& rect);
     void processVisibleNode(const ActiveNode& n);
     void drawObject(int index);
     void drawPart(int object, int node);
