@@ -109,7 +109,8 @@ for scene in ("bunnies", "plant"):
             fc = "-" if backend == "gl" else str(sum(int(float(r["false_culls"] or 0)) for r in rs))
             row = dict(scene=scene, backend=backend, algo=algo, mode=name, frames=len(rs),
                        mean_ms=mean_ms, median_ms=med_ms, p95_ms=p95_ms, parts=m("parts_drawn"),
-                       queries=m("occlusion_queries"), batches=m("query_batches"),
+                       queries=m("occlusion_queries"), hidden=m("queries_hidden"),
+                       batches=m("query_batches"),
                        skips=m("coherence_skips"), triangles=m("triangles_drawn"),
                        pvs=m("pvs"), exact=q("exact"), false_culls=fc)
             rows[(scene, backend, algo)] = row
@@ -123,10 +124,11 @@ with open(f"{out}/summary.csv", "w") as f:
 with open(f"{out}/table1.md", "w") as f:
     for backend, what in (("software", f"software backend ({runs} runs, oracle in the first)"),
                           ("gl", f"OpenGL backend on llvmpipe ({gl_runs} runs, no oracle)")):
-        f.write(f"Table 1, {what}, {res} pixels on the long side:\n\n")
-        f.write("| scene | time per frame, ms (mean; median; p95) |||" +
-                " rendered object parts ||| occlusion queries |||\n")
-        f.write("| --- | Full | Simple OC | VFC only | Full | Simple OC | VFC only | Full | Simple OC | VFC only |\n")
+        f.write(f"Table 1, {what}, {res} pixels on the long side; times are "
+                "mean; median; p95 over the frames of each frame's median over the runs:\n\n")
+        f.write("| scene | ms a frame, Full | Simple OC | VFC only | parts rendered, Full | "
+                "Simple OC | VFC only | queries, Full | Simple OC | VFC only |\n")
+        f.write("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n")
         for scene in ("bunnies", "plant"):
             r = [rows[(scene, backend, a)] for a, _ in modes]
             t = " | ".join("%.1f; %.1f; %.1f" % (x["mean_ms"], x["median_ms"], x["p95_ms"]) for x in r)
@@ -134,13 +136,13 @@ with open(f"{out}/table1.md", "w") as f:
             qq = " | ".join("%.0f" % x["queries"] for x in r)
             f.write(f"| {scene} | {t} | {p} | {qq} |\n")
         f.write("\n")
-        f.write("| scene | mode | PVS | exact | false culls | triangles drawn | batches | coherence skips |\n")
-        f.write("| --- | --- | --- | --- | --- | --- | --- | --- |\n")
+        f.write("| scene | mode | PVS | exact | false culls | triangles drawn | queries answered hidden | batches | coherence skips |\n")
+        f.write("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n")
         for scene in ("bunnies", "plant"):
             for a, name in modes:
                 x = rows[(scene, backend, a)]
                 f.write(f"| {scene} | {name} | {x['pvs']:.1f} | {x['exact']} | {x['false_culls']} | "
-                        f"{x['triangles']:.0f} | {x['batches']:.0f} | {x['skips']:.0f} |\n")
+                        f"{x['triangles']:.0f} | {x['hidden']:.0f} | {x['batches']:.0f} | {x['skips']:.0f} |\n")
         f.write("\n")
 
 lines = ["| target | scene | backend | measured (ratio of means; of medians) | met |", "| --- | --- | --- | --- | --- |"]
@@ -161,8 +163,8 @@ for scene in ("bunnies", "plant"):
         lines.append(f"| (Full p95 / median, stalls) | {scene} | {backend} | "
                      f"{full['p95_ms'] / full['median_ms']:.2f} | - |")
 lines += ["", "Full's history knob (software backend, same run):", "",
-          "| scene | --bsp-history | queries | parts | time per frame, ms (mean; median; p95) | PVS | false culls |",
-          "| --- | --- | --- | --- | --- | --- | --- |"]
+          "| scene | --bsp-history | queries | answered hidden | parts | time per frame, ms (mean; median; p95) | PVS | false culls |",
+          "| --- | --- | --- | --- | --- | --- | --- | --- |"]
 for scene in ("bunnies", "plant"):
     per = {}
     for r in csv.DictReader(open(f"{out}/{scene}-software.csv")):
@@ -172,7 +174,8 @@ for scene in ("bunnies", "plant"):
         mean_ms, med_ms, p95_ms = stats([float(r["cull_ms_median"]) for r in rs])
         m = lambda k: sum(float(r.get(k) or 0) for r in rs) / len(rs)
         fc = sum(int(float(r["false_culls"] or 0)) for r in rs)
-        lines.append(f"| {scene} | {h} | {m('occlusion_queries'):.0f} | {m('parts_drawn'):.0f} | "
+        lines.append(f"| {scene} | {h} | {m('occlusion_queries'):.0f} | {m('queries_hidden'):.0f} | "
+                     f"{m('parts_drawn'):.0f} | "
                      f"{mean_ms:.1f}; {med_ms:.1f}; {p95_ms:.1f} | {m('pvs'):.1f} | {fc} |")
 open(f"{out}/ratios.md", "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))

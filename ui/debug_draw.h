@@ -2,8 +2,8 @@
 // Jolt Physics' DebugRenderer: the overlay emits triangles, lines and text
 // labels, and the rectangles, outlines, dashes, hatches, polygons and voxels
 // built on them (an image cell is a rectangle from ImageFrame::pixelsToView),
-// each with a Paint from the one palette (ui/palette.h). It never sees OpenGL: the app draws what it emitted
-// (app/gl_debug_draw.h) and tests read it back from a DebugDrawBatch.
+// each with a Paint from the one palette (ui/palette.h). It never sees OpenGL: the app draws what
+// it emitted (app/gl_debug_draw.h) and tests read it back from a DebugDrawBatch.
 //
 // Two spaces:
 //   World  scene coordinates, through the view's camera (2D: the x-y plane, z = 0);

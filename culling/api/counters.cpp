@@ -55,6 +55,9 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
      "coherence)"},
     {Counter::PartsDrawn, "parts_drawn",
      "object parts drawn: whole objects, and leaves of objects' own BSP trees"},
+    {Counter::QueriesHidden, "queries_hidden",
+     "occlusion queries answered hidden (the ones that culled something; the others cost "
+     "a query and saved nothing)"},
 }};
 
 constexpr bool inCounterOrder() {

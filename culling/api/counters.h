@@ -43,6 +43,7 @@ enum class Counter : uint8_t {
     QueryBatches,
     CoherenceSkips,
     PartsDrawn,
+    QueriesHidden,
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

@@ -1,3 +1,6 @@
+// Kovalčík & Sochor, "Fast rendering of complex dynamic scenes", sections 3.1
+// to 3.4 and Algorithms 2 to 4: the frame of bsp_oq_culler.h, whose header says
+// what each step does and where it departs from the paper.
 #include "culling/bsp_oq/bsp_oq_culler.h"
 
 #include <algorithm>
@@ -28,6 +31,15 @@ bool overlaps(const PixelRect& a, const PixelRect& b) {
 int bspSkipFrames(uint32_t answers, int history) {
     assert(history >= 0 && history <= kMaxBspHistory);
     return __builtin_popcount(answers & historyMask(history));
+}
+
+int bspSpreadSkip(int skip, uint64_t key) {
+    // SplitMix64's finalizer: every bit of the key moves every bit of the hash.
+    key += 0x9E3779B97F4A7C15ull;
+    key = (key ^ (key >> 30)) * 0xBF58476D1CE4E5B9ull;
+    key = (key ^ (key >> 27)) * 0x94D049BB133111EBull;
+    key ^= key >> 31;
+    return skip + int(key % uint64_t(skip / 2 + 1));
 }
 
 BspOqCuller::BspOqCuller(std::string name, BspOqMode mode, const BspOqOptions& options,
@@ -231,7 +243,8 @@ BspOqCuller::Estimate BspOqCuller::firstVisibilityTest(const ActiveNode& n, Pixe
     return estimate;
 }
 
-BspOqCuller::Estimate BspOqCuller::estimateAfresh(const ActiveNode& n, NodeState& s, PixelRect& rect) {
+BspOqCuller::Estimate BspOqCuller::estimateAfresh(const ActiveNode& n, NodeState& s,
+                                                  PixelRect& rect) {
     if (nodeEmpty(n)) {
         setState(s, BspNodeState::Empty);
         return Estimate::Invisible;
@@ -257,7 +270,7 @@ BspOqCuller::Estimate BspOqCuller::estimateAfresh(const ActiveNode& n, NodeState
         return Estimate::Invisible;
     }
     if (s.visible_frame != frame_ - 1) return Estimate::NeedQuery;  // WasInvisibleLastTime
-    if (s.skip > 0) {  // ExamineRecentQueryResults
+    if (s.skip > 0) {                                               // ExamineRecentQueryResults
         --s.skip;
         ++skips_;
         setState(s, BspNodeState::AssumedVisible);
@@ -347,12 +360,18 @@ void BspOqCuller::readBatch() {
         NodeState& s = stateOf(it->node);
         s.answers = (s.answers << 1) | (visible ? 1u : 0u);
         s.answer_count = std::min(s.answer_count + 1, kMaxBspHistory);
-        s.skip = visible && mode_ == BspOqMode::Full ? bspSkipFrames(s.answers, options_.history)
-                                                     : 0;
+        s.skip =
+            visible && mode_ == BspOqMode::Full ? bspSkipFrames(s.answers, options_.history) : 0;
+        if (s.skip > 0 && options_.skip_spread) {
+            const uint64_t node = uint64_t(uint32_t(it->node.object + 1)) << 32 |
+                                  uint64_t(uint32_t(it->node.node));
+            s.skip = bspSpreadSkip(s.skip, node * 0x100000001B3ull ^ uint64_t(frame_));
+        }
         const int32_t logged = s.query;
         setState(s, visible ? BspNodeState::QueriedVisible : BspNodeState::QueriedHidden);
         s.query = logged;
         if (logged >= 0) query_log_[size_t(logged)].visible = visible;
+        if (!visible) ++queries_hidden_;
         if (visible) processVisibleNode(it->node);
     }
     pending_.clear();
@@ -405,7 +424,8 @@ void BspOqCuller::cull(const Scene& scene, const Camera& camera, double t, Frame
     camera_ = &camera;
     t_ = t;
     ++frame_;
-    nodes_tested_ = queries_ = skips_ = parts_ = triangles_ = objects_tested_ = batches_ = 0;
+    nodes_tested_ = queries_ = queries_hidden_ = skips_ = parts_ = triangles_ = objects_tested_ =
+        batches_ = 0;
     batch_ = 0;
     query_log_.clear();
 
@@ -429,6 +449,7 @@ void BspOqCuller::cull(const Scene& scene, const Camera& camera, double t, Frame
     std::sort(out.pvs.begin(), out.pvs.end());
     out.stats.set(Counter::NodesVisited, nodes_tested_);
     out.stats.set(Counter::OcclusionQueries, queries_);
+    out.stats.set(Counter::QueriesHidden, queries_hidden_);
     out.stats.set(Counter::QueryBatches, batches_);
     out.stats.set(Counter::CoherenceSkips, skips_);
     out.stats.set(Counter::PartsDrawn, parts_);

@@ -19,7 +19,8 @@
 //   Visible     it was, and its query is still postponed: after a query answers
 //               visible, the query is skipped for as many frames as there were
 //               visible answers among the node's last `history` queries
-//               (Figure 3; bspSkipFrames);
+//               (Figure 3; bspSkipFrames), lengthened by up to half with
+//               `skip_spread` (bspSpreadSkip);
 //   NeedQuery   otherwise.
 // A NeedQuery node joins the current batch if its query box's screen
 // rectangle overlaps neither a rectangle of the batch nor one of a node already
@@ -61,6 +62,10 @@
 //   near plane cannot be drawn as a query. The count of queries leaves these
 //   out in every mode.
 // - The rule of Figure 3 is ours: the paper shows a curve without numbers.
+//   Its spread is ours too: without it every node that answered visible in
+//   the same frame comes due in the same frames (1, 3, 6, 10, ... after the
+//   first frame: the query count's spikes and the frame-time stalls of
+//   docs/results/bsp-oq.md's first run).
 // - Objects without trees in a visible scene node are tested against the
 //   frustum one by one before they are drawn (the paper renders them), in
 //   every mode, so that VFC only draws what its name says.
@@ -86,6 +91,10 @@ namespace gridcull {
 // the node's recent answers (bit 0 the latest, 1 visible) of which the last
 // `history` count (0: none, no skipping; at most kMaxBspHistory).
 int bspSkipFrames(uint32_t answers, int history);
+// The skip lengthened by a spread in [0, skip / 2], a hash of `key` (the
+// node's identity and the frame): deterministic, and different for nodes that
+// answered visible together.
+int bspSpreadSkip(int skip, uint64_t key);
 
 class BspOqCuller final : public Culler {
 public:
@@ -134,10 +143,10 @@ private:
     };
     struct SceneNodeState {
         NodeState node;
-        uint32_t serial = 0;          // SceneBsp::nodeSerial it belongs to
-        int64_t changed_frame = 0;    // the last frame its contents changed
-        int64_t tight_frame = -1;     // the frame `tight` was computed
-        Aabb tight;                   // the box of its subtree's objects
+        uint32_t serial = 0;        // SceneBsp::nodeSerial it belongs to
+        int64_t changed_frame = 0;  // the last frame its contents changed
+        int64_t tight_frame = -1;   // the frame `tight` was computed
+        Aabb tight;                 // the box of its subtree's objects
     };
     struct PendingQuery {
         ActiveNode node;
@@ -186,8 +195,8 @@ private:
 
     // Object trees: one per distinct mesh, shared by its copies.
     std::vector<std::unique_ptr<ObjectBsp>> trees_;
-    std::vector<int> tree_handle_;        // by tree: its triangle set on the target
-    std::vector<int> tree_of_;            // by object: index into trees_, -1: none
+    std::vector<int> tree_handle_;         // by tree: its triangle set on the target
+    std::vector<int> tree_of_;             // by object: index into trees_, -1: none
     std::vector<glm::dvec3> translation_;  // by object: its tree's translation at t
     std::vector<int> object_state_first_;  // by object: its nodes in object_states_
     std::vector<NodeState> object_states_;
@@ -195,15 +204,15 @@ private:
 
     std::vector<ActiveNode> stack_;
     std::vector<PendingQuery> pending_;
-    std::vector<PendingQuery> waiting_;  // nodes whose query waits for the batch's answers
-    std::vector<int> walk_;                       // tightBox's subtree walk
-    std::vector<std::pair<double, int>> order_;   // a node's objects by distance
-    std::vector<int64_t> drawn_frame_;            // by object: last frame it was drawn
+    std::vector<PendingQuery> waiting_;          // nodes whose query waits for the batch's answers
+    std::vector<int> walk_;                      // tightBox's subtree walk
+    std::vector<std::pair<double, int>> order_;  // a node's objects by distance
+    std::vector<int64_t> drawn_frame_;           // by object: last frame it was drawn
     int32_t batch_ = 0;
 
     FrameResult* out_ = nullptr;
-    int64_t nodes_tested_ = 0, queries_ = 0, skips_ = 0, parts_ = 0, triangles_ = 0,
-            objects_tested_ = 0, batches_ = 0;
+    int64_t nodes_tested_ = 0, queries_ = 0, queries_hidden_ = 0, skips_ = 0, parts_ = 0,
+            triangles_ = 0, objects_tested_ = 0, batches_ = 0;
 
     bool capture_ = false;
     BspOqSnapshot snapshot_;

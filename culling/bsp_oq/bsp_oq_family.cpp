@@ -27,6 +27,10 @@ const KnobTable<BspOqOptions>& bspOqKnobs() {
         knob("bsp-history", &BspOqOptions::history, 0, kMaxBspHistory,
              "bsp-oq: after a visible answer, a node's query is skipped for as many frames as "
              "there were visible answers among its last N queries; 0: a query every frame"),
+        knob("bsp-skip-spread", &BspOqOptions::skip_spread, 0, 1,
+             "bsp-oq: 1 lengthens each skip by a pseudo-random 0 to half of itself, so that "
+             "nodes seen together are not all queried again in one frame (a stall); 0: the "
+             "count of visible answers alone"),
         knob("bsp-batch", &BspOqOptions::batch, 1, kMaxBspBatch,
              "bsp-oq: queries issued at once (non-overlapping screen rectangles) before their "
              "answers are read; 1: one at a time"),
@@ -62,9 +66,8 @@ FamilyEntry bspOqFamily() {
             mode = BspOqMode::Vfc;
         else
             return nullptr;
-        return std::make_unique<BspOqCuller>(request.name, mode, options,
-                                             request.reference_resolution,
-                                             std::move(request.target));
+        return std::make_unique<BspOqCuller>(
+            request.name, mode, options, request.reference_resolution, std::move(request.target));
     };
     return family;
 }

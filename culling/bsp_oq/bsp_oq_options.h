@@ -30,6 +30,11 @@ struct BspOqOptions {
     // many frames as there were visible answers among the last `history`
     // queries of the node; 0: no skipping (a query every frame).
     int history = 8;
+    // 1: each skip is lengthened by a pseudo-random 0 to half of itself, so
+    // that nodes that turned visible together (every node at the first frame,
+    // a whole region after a turn) do not all come due for their queries in
+    // the same frame; 0: Figure 3's count alone.
+    int skip_spread = 1;
     // Algorithm 2: the most queries issued in one batch (of non-overlapping
     // screen rectangles) before their answers are read.
     int batch = 64;

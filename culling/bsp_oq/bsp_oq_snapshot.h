@@ -46,24 +46,24 @@ enum class BspNodeState : uint8_t {
 constexpr int kBspNodeStateCount = 8;
 
 struct BspNodeRecord {
-    Aabb box;   // the box it was tested on (shrunk or its cell), world units
-    Aabb cell;  // its subspace (an object node's: moved with the object)
-    int32_t node = 0;     // SceneBsp node index, or ObjectBsp node index
-    int32_t object = -1;  // -1: a scene node; else the object whose tree holds it
-    int32_t depth = 0;    // the root is 0
+    Aabb box;              // the box it was tested on (shrunk or its cell), world units
+    Aabb cell;             // its subspace (an object node's: moved with the object)
+    int32_t node = 0;      // SceneBsp node index, or ObjectBsp node index
+    int32_t object = -1;   // -1: a scene node; else the object whose tree holds it
+    int32_t depth = 0;     // the root is 0
     int32_t contents = 0;  // scene node: objects in its subtree; object node: triangles
     BspNodeState state = BspNodeState::NotReached;
     bool leaf = false;
-    bool shrunk = false;     // `box` is the shrunk box of its contents, not its cell
-    uint32_t history = 0;    // recent query results, bit 0 the latest (1: visible)
+    bool shrunk = false;         // `box` is the shrunk box of its contents, not its cell
+    uint32_t history = 0;        // recent query results, bit 0 the latest (1: visible)
     int32_t history_length = 0;  // valid bits of `history`
-    int32_t skip = 0;        // frames its query is still postponed after this one
-    int32_t query = -1;      // its query's index in BspOqSnapshot::queries, -1: none
+    int32_t skip = 0;            // frames its query is still postponed after this one
+    int32_t query = -1;          // its query's index in BspOqSnapshot::queries, -1: none
 };
 
 struct BspQueryRecord {
-    PixelRect rect;        // the query box's screen rectangle
-    int32_t record = -1;   // the node: index in scene_nodes (object < 0) or object_nodes
+    PixelRect rect;       // the query box's screen rectangle
+    int32_t record = -1;  // the node: index in scene_nodes (object < 0) or object_nodes
     bool object_node = false;
     int32_t batch = 0;     // batches in issue order, from 0
     bool visible = false;  // the answer

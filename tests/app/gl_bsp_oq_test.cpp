@@ -98,9 +98,9 @@ TEST(GlBspOq, TriangleSetsDrawTheirRangesOnly) {
     const Camera camera = cameraAt(scene, 0.0);
     gl.prepare(scene);
     // Two quads side by side at z = 0: left [-6, -1], right [1, 6], y in [-3, 3].
-    const std::vector<glm::dvec3> corners{
-        {-6, -3, 0}, {-1, -3, 0}, {-1, 3, 0}, {-6, -3, 0}, {-1, 3, 0}, {-6, 3, 0},
-        {1, -3, 0},  {6, -3, 0},  {6, 3, 0},  {1, -3, 0},  {6, 3, 0},  {1, 3, 0}};
+    const std::vector<glm::dvec3> corners{{-6, -3, 0}, {-1, -3, 0}, {-1, 3, 0}, {-6, -3, 0},
+                                          {-1, 3, 0},  {-6, 3, 0},  {1, -3, 0}, {6, -3, 0},
+                                          {6, 3, 0},   {1, -3, 0},  {6, 3, 0},  {1, 3, 0}};
     const int set = gl.addTriangleSet(corners);
     gl.begin(camera, 160, 120, false);
     ScreenMapping mapping;

@@ -36,15 +36,15 @@ const KnobTable<BspOqViewFlags>& bspOqViewFlags() {
         knob("bsp-show-queries", &BspOqViewFlags::show_queries, 0, 1,
              "1 draws the frame's occlusion queries as screen rectangles over the view through "
              "the culling camera, by answer, labelled with their batch; 0 hides them"),
-        derivedKnob("bsp-show-batch", &BspOqViewFlags::batch, 0,
-                    std::numeric_limits<int>::max(), "all", "every batch",
+        derivedKnob("bsp-show-batch", &BspOqViewFlags::batch, 0, std::numeric_limits<int>::max(),
+                    "all", "every batch",
                     "show only the query rectangles of batch N (0 is the frame's first)"),
         derivedKnob("bsp-object", &BspOqViewFlags::object, 0, std::numeric_limits<int>::max(),
                     "none", "none",
                     "pick the object with scene id N, as a click in the window does: its BSP "
                     "tree's nodes drawn by state when the traversal entered it"),
-        derivedKnob("bsp-node", &BspOqViewFlags::node, 0, std::numeric_limits<int>::max(),
-                    "none", "none",
+        derivedKnob("bsp-node", &BspOqViewFlags::node, 0, std::numeric_limits<int>::max(), "none",
+                    "none",
                     "pick scene-tree node N (as the panel numbers them), as a click on its box "
                     "does: drawn heavier, its recent query answers and skip counter in the panel"),
     };

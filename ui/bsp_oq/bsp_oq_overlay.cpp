@@ -3,7 +3,6 @@
 
 #include <cstdio>
 
-
 namespace gridcull {
 
 namespace {
@@ -44,8 +43,7 @@ BspOverlayCounts drawBspOqQueries(const BspOqSnapshot& snapshot, const BspOqView
         const Paint paint{bspQuerySwatch(q.visible), kQueryAlpha};
         draw.outlineRect(r, paint, kBspQueryWidth);
         ++counts.queries;
-        if (r.x1 - r.x0 < kBspMinLabelledWidth || r.y1 - r.y0 < kBspMinLabelledHeight)
-            continue;
+        if (r.x1 - r.x0 < kBspMinLabelledWidth || r.y1 - r.y0 < kBspMinLabelledHeight) continue;
         char label[16];
         std::snprintf(label, sizeof label, "%d", int(q.batch));
         draw.text(DrawSpace::View, {r.x0 + kLabelInset, r.y0 + kLabelInset, 0.0}, label, paint,

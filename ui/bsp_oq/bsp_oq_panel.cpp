@@ -51,8 +51,8 @@ void nodeStates(const BspOqSnapshot& bsp, BspOqViewState& view, int tree_object)
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", bspNodeStateMeaning(state));
         ImGui::PopID();
     }
-    const BspDrawnCounts drawn = forEachDrawnBspNode(bsp, view, tree_object,
-                                                     [](const BspNodeRecord&, BspNodeRef) {});
+    const BspDrawnCounts drawn =
+        forEachDrawnBspNode(bsp, view, tree_object, [](const BspNodeRecord&, BspNodeRef) {});
     ImGui::Text("boxes drawn: %d scene, %d object (cap %d)", drawn.scene, drawn.object,
                 kBspMaxNodesDrawn);
 }
@@ -65,8 +65,7 @@ void queries(const BspOqSnapshot& bsp, BspOqViewState& view) {
     if (bsp.batch_count > 0) {
         ImGui::SetNextItemWidth(-1.0f);
         ImGui::SliderInt("##batch", &view.batch, -1, bsp.batch_count - 1,
-                         view.batch < 0 ? "every batch" : "batch %d",
-                         ImGuiSliderFlags_AlwaysClamp);
+                         view.batch < 0 ? "every batch" : "batch %d", ImGuiSliderFlags_AlwaysClamp);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The batch whose rectangles are drawn (--bsp-show-batch)");
     }
@@ -97,8 +96,7 @@ void focusedObject(const BspOqSnapshot& bsp, const BspOqPanelInput& input) {
     else if (bsp.object_first[size_t(i)] < 0)
         ImGui::Text("object %d (%s): tree not entered", id, how);
     else
-        ImGui::Text("object %d (%s): tree of %d nodes", id, how,
-                    int(bsp.object_count[size_t(i)]));
+        ImGui::Text("object %d (%s): tree of %d nodes", id, how, int(bsp.object_count[size_t(i)]));
 }
 
 void historyRow(const BspNodeRecord& node) {

@@ -69,8 +69,7 @@ const char* bspNodeStateMeaning(BspNodeState state) {
 }
 
 Swatch bspQuerySwatch(bool visible) {
-    return bspNodeStateSwatch(visible ? BspNodeState::QueriedVisible
-                                      : BspNodeState::QueriedHidden);
+    return bspNodeStateSwatch(visible ? BspNodeState::QueriedVisible : BspNodeState::QueriedHidden);
 }
 
 int bspNodeMask(const BspOqViewState& view) {
@@ -121,8 +120,8 @@ void consider(const BspNodeRecord& node, BspNodeRef ref, const glm::dvec3& origi
 
 }  // namespace
 
-BspNodeRef pickBspNode(const BspOqSnapshot& snapshot, const BspOqViewState& view,
-                       int tree_object, const glm::dvec3& origin, const glm::dvec3& direction) {
+BspNodeRef pickBspNode(const BspOqSnapshot& snapshot, const BspOqViewState& view, int tree_object,
+                       const glm::dvec3& origin, const glm::dvec3& direction) {
     Best best;
     forEachDrawnBspNode(snapshot, view, tree_object,
                         [&](const BspNodeRecord& node, BspNodeRef ref) {

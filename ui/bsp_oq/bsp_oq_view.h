@@ -105,8 +105,8 @@ BspDrawnCounts forEachDrawnBspNode(const BspOqSnapshot& snapshot, const BspOqVie
 // -1: none), the one whose box the ray enters first from outside (a box around
 // the ray's origin is skipped: every ray starts in it); a tie goes to the
 // smaller box, the deeper node. None when the ray enters no drawn box.
-BspNodeRef pickBspNode(const BspOqSnapshot& snapshot, const BspOqViewState& view,
-                       int tree_object, const glm::dvec3& origin, const glm::dvec3& direction);
+BspNodeRef pickBspNode(const BspOqSnapshot& snapshot, const BspOqViewState& view, int tree_object,
+                       const glm::dvec3& origin, const glm::dvec3& direction);
 
 // A node's recent query answers as marks, latest first: 'V' visible, 'H'
 // hidden, history_length of them (at most kMaxBspHistory); "" when it was never

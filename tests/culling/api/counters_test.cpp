@@ -21,7 +21,7 @@ TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
         "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
         "cell_updates",   "bvh_rebuilds",   "probability_skips", "state_fetches",
         "tbv_messages",   "octree_update_nodes", "occlusion_queries", "query_batches",
-        "coherence_skips", "parts_drawn"};
+        "coherence_skips", "parts_drawn", "queries_hidden"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {

@@ -21,10 +21,21 @@ namespace gridcull {
 namespace {
 
 constexpr int kResolution = 256;
+// A steady view's queries a frame, peak over mean: all nodes due together give
+// a peak of about the skip (8) times the mean; spread, a few times it at most.
+constexpr double kBunchedPeak = 5.0;
+constexpr double kSpreadPeak = 3.0;
 
 BspOqOptions testOptions() {
     BspOqOptions options;
     options.leaf_triangles = test::kBspTestLeafTriangles;
+    return options;
+}
+
+// Figure 3's count alone, as the model below computes it.
+BspOqOptions unspreadOptions() {
+    BspOqOptions options = testOptions();
+    options.skip_spread = 0;
     return options;
 }
 
@@ -57,7 +68,7 @@ Scene wallScene() {
 // then skipped for as many frames as its last `history` answers were visible.
 TEST(BspOqCuller, SkipCounterFollowsAlgorithm3) {
     const Scene scene = wallScene();
-    BspOqCuller culler("bsp-oq", BspOqMode::Full, testOptions(), kResolution);
+    BspOqCuller culler("bsp-oq", BspOqMode::Full, unspreadOptions(), kResolution);
     culler.setDebugCapture(true);
     culler.reset(scene);
     ASSERT_NE(culler.objectTree(1), nullptr);
@@ -99,6 +110,56 @@ TEST(BspOqCuller, SkipCounterFollowsAlgorithm3) {
     // 1, 2, ... 8 frames skipped after each query, then 8: queries at frames
     // 0, 2, 5, 9, 14, 20, 27, 35 of 40.
     EXPECT_EQ(queries, 8);
+}
+
+TEST(BspSpreadSkip, LengthensBetweenNothingAndHalfAndVariesWithTheKey) {
+    EXPECT_EQ(bspSpreadSkip(0, 12345), 0);
+    EXPECT_EQ(bspSpreadSkip(1, 12345), 1);  // half of 1 is 0
+    std::vector<int> seen(13, 0);
+    for (uint64_t key = 0; key < 1000; ++key) {
+        const int skip = bspSpreadSkip(8, key);
+        ASSERT_GE(skip, 8);
+        ASSERT_LE(skip, 12);
+        ++seen[size_t(skip)];
+    }
+    for (int skip = 8; skip <= 12; ++skip) EXPECT_GT(seen[size_t(skip)], 120) << skip;
+}
+
+// A static view of many objects that all turn visible in the first frame: with
+// Figure 3's count alone their queries come due together (frames 0, 2, 5, 9,
+// ...), with the spread they spread over the frames between.
+TEST(BspOqCuller, SpreadSkipsDoNotBunchTheQueries) {
+    Scene scene = test::scene3d();
+    test::setCamera(scene, {50, 50, -40}, {50, 50, 50}, 60.0);
+    SeededRandom rng(5);
+    const auto mesh = test::bumpySphereMesh(rng, 2.5, 16, 10, 0.2);
+    int id = 0;
+    for (int x = 0; x < 8; ++x)
+        for (int y = 0; y < 6; ++y) test::addMesh(scene, id++, {15 + 10.0 * x, 25 + 10.0 * y, 50}, mesh);
+    scene.dt = 0.1;
+    scene.frames = 80;
+    scene.finalize();
+    auto peakOverMean = [&](const BspOqOptions& options) {
+        BspOqCuller culler("bsp-oq", BspOqMode::Full, options, kResolution);
+        culler.reset(scene);
+        FrameResult out;
+        int64_t total = 0, peak = 0;
+        for (int frame = 0; frame < scene.frames; ++frame) {
+            const double t = scene.timeOfFrame(frame);
+            culler.cull(scene, cameraAt(scene, t), t, out);
+            EXPECT_EQ(int(out.pvs.size()), id);
+            if (frame < 20) continue;  // past the start, where every node is new
+            total += out.stats.get(Counter::OcclusionQueries);
+            peak = std::max(peak, out.stats.get(Counter::OcclusionQueries));
+        }
+        return double(peak) / (double(total) / (scene.frames - 20));
+    };
+    const double bunched = peakOverMean(unspreadOptions());
+    const double spread = peakOverMean(testOptions());
+    std::printf("[bsp spread] queries a frame, peak / mean: %.2f alone, %.2f spread\n", bunched,
+                spread);
+    EXPECT_GT(bunched, kBunchedPeak);
+    EXPECT_LT(spread, kSpreadPeak);
 }
 
 // With no history, a visible node is queried every frame.

@@ -34,7 +34,8 @@ void runScene(uint64_t seed, const std::string& algo, const KnobValues& knobs, T
     const Scene scene = test::bspRandomScene(seed);
     KnobValues with = knobs;
     with.set("oracle-res", kOracleResolution);
-    if (!with.has("bsp-leaf-triangles")) with.set("bsp-leaf-triangles", test::kBspTestLeafTriangles);
+    if (!with.has("bsp-leaf-triangles"))
+        with.set("bsp-leaf-triangles", test::kBspTestLeafTriangles);
     auto culler = test::makeOrDie(algo, with);
     auto exact = test::makeOrDie("exact", with);
     auto vfc = test::makeOrDie("vfc", with);

@@ -39,7 +39,8 @@ inline std::shared_ptr<TriangleMesh> bumpySphereMesh(SeededRandom& rng, double r
         const double theta = M_PI * i / stacks;
         for (int j = 0; j < slices; ++j) {
             const double phi = 2.0 * M_PI * j / slices;
-            const double rr = r * (1.0 + bump * std::sin(waves * phi + phase) * std::sin(theta * 3));
+            const double rr =
+                r * (1.0 + bump * std::sin(waves * phi + phase) * std::sin(theta * 3));
             v.push_back({rr * std::sin(theta) * std::cos(phi), rr * std::cos(theta),
                          rr * std::sin(theta) * std::sin(phi)});
         }
@@ -58,8 +59,7 @@ inline std::shared_ptr<TriangleMesh> bumpySphereMesh(SeededRandom& rng, double r
 }
 
 // An open sheet of n x n quads, side s, waving in y by up to `amp`.
-inline std::shared_ptr<TriangleMesh> wavySheetMesh(SeededRandom& rng, double s, int n,
-                                                   double amp) {
+inline std::shared_ptr<TriangleMesh> wavySheetMesh(SeededRandom& rng, double s, int n, double amp) {
     std::vector<glm::dvec3> v;
     std::vector<uint32_t> idx;
     const double k = rng.uniform(0.5, 3.0);
@@ -109,8 +109,8 @@ inline Scene bspRandomScene(uint64_t seed) {
             meshes.push_back(bumpySphereMesh(rng, size, 8 + int(rng.below(17)),
                                              6 + int(rng.below(12)), rng.uniform(0.0, 0.4)));
         else
-            meshes.push_back(wavySheetMesh(rng, 2.0 * size, 4 + int(rng.below(14)),
-                                           rng.uniform(0.0, size)));
+            meshes.push_back(
+                wavySheetMesh(rng, 2.0 * size, 4 + int(rng.below(14)), rng.uniform(0.0, size)));
     }
     const int crowd = 1 + int(rng.below(80));
     for (int k = 0; k < crowd; ++k) {

@@ -65,17 +65,17 @@ TEST(ObjectBspDraw, LeavesDrawnOneByOneCoverWhatTheMeshCovers) {
     long long covered = 0, differ = 0;
     for (uint64_t seed = 1; seed <= 20; ++seed) {
         SeededRandom rng(seed);
-        const auto mesh = rng.uniform() < 0.7
-                              ? test::bumpySphereMesh(rng, 5.0, 24, 16, 0.3)
-                              : test::wavySheetMesh(rng, 10.0, 16, 3.0);
+        const auto mesh = rng.uniform() < 0.7 ? test::bumpySphereMesh(rng, 5.0, 24, 16, 0.3)
+                                              : test::wavySheetMesh(rng, 10.0, 16, 3.0);
         ObjectBspParams params;
         params.max_leaf_triangles = 1 + int(rng.below(40));
         const ObjectBsp tree(*mesh, params);
         std::vector<glm::dvec3> pieces;
-        for (const BspTrianglePiece& p : tree.pieces()) pieces.insert(pieces.end(), {p.v[0], p.v[1], p.v[2]});
+        for (const BspTrianglePiece& p : tree.pieces())
+            pieces.insert(pieces.end(), {p.v[0], p.v[1], p.v[2]});
         const glm::dvec3 at{50, 50, 50};
-        const Camera camera = cameraLookingAt(
-            at + 20.0 * randomDirection(rng, 3) * rng.uniform(0.8, 2.0), at);
+        const Camera camera =
+            cameraLookingAt(at + 20.0 * randomDirection(rng, 3) * rng.uniform(0.8, 2.0), at);
         IdDepthBuffer whole, parts;
         whole.resize(200, 150);
         parts.resize(200, 150);
@@ -85,8 +85,8 @@ TEST(ObjectBspDraw, LeavesDrawnOneByOneCoverWhatTheMeshCovers) {
         for (int k = 0; k < tree.nodeCount(); ++k) {
             const ObjectBspNode& n = tree.node(k);
             if (!n.isLeaf() || n.piece_count == 0) continue;
-            parts.drawTriangles(0, pieces.data() + 3 * size_t(n.first_piece),
-                                size_t(n.piece_count), at);
+            parts.drawTriangles(0, pieces.data() + 3 * size_t(n.first_piece), size_t(n.piece_count),
+                                at);
         }
         const Comparison c = compare(whole, parts);
         EXPECT_LE(c.worst_depth, kRelativeDepthTolerance) << "seed " << seed;
