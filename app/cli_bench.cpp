@@ -103,6 +103,11 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
     c.csv_option = cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
         ->type_name("FILE");
     cmd->add_flag("--no-quality", c.no_quality, "skip the exact oracle (pvs only, faster)");
+    cmd->add_option("--seek", c.seek,
+                    "time the window's seeks instead: a step forward into each frame F\n"
+                    "and a step back into it (R runs each), the frames each replayed, and\n"
+                    "the memory its checkpoints take")
+        ->type_name("F[,G...]");
     c.knobs.addTo(*cmd, false);
     cmd->footer(cullingHelpFooter(appAlgorithmNames()));
     return cmd;
@@ -126,6 +131,7 @@ int runBench(const BenchCommand& c) {
             return usageError("bench", c.scene + ": " + error);
     }
     printUnusedNotes("bench", c.knobs, run_algorithms);
+    if (!c.seek.empty()) return runSeekBench(c, scene, algos);
 
     std::vector<std::unique_ptr<Culler>> cullers;
     std::vector<AlgoBench> benches(algos.size());

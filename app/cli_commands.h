@@ -3,9 +3,11 @@
 // Internal to the command line.
 #pragma once
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli.h"
 #include "app/cli_options.h"
 #include "app/window.h"
 
@@ -21,7 +23,7 @@ CLI::App* addCullCommand(CLI::App& app, CullCommand& c);
 int runCull(const CullCommand& c);
 
 struct BenchCommand {
-    std::string scene, algo, csv;
+    std::string scene, algo, csv, seek;
     long long frames = -1, runs = 5;
     bool no_quality = false;
     KnobOptions knobs;
@@ -29,6 +31,9 @@ struct BenchCommand {
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c);
 int runBench(const BenchCommand& c);
+// bench --seek: the window's steps forward and back timed instead of culling
+// (app/cli_bench_seek.cpp).
+int runSeekBench(const BenchCommand& c, const Scene& scene, const std::vector<AlgoVariant>& algos);
 
 // `shot` and `view` share the window's options.
 struct WindowCommand {

@@ -3,7 +3,8 @@
 #  1. the core libraries (grid, culling) built alone with GRIDCULL_CORE_ONLY=ON,
 #     which proves they need no GL, GLFW or ImGui, and with GRIDCULL_SANITIZE=ON:
 #     their tests (the extremes suite among them) run under AddressSanitizer,
-#     LeakSanitizer and UndefinedBehaviorSanitizer, and any report fails them;
+#     LeakSanitizer and UndefinedBehaviorSanitizer, and any report fails them (the
+#     long random sweeps on a fifth of their scenes: tests/common/test_seeds.h);
 #  2. the full build's tests, the screenshot tests among them (under xvfb-run).
 set -euo pipefail
 cd "$(dirname "$0")/.."

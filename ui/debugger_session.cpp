@@ -39,6 +39,7 @@ bool DebuggerSession::open(Scene scene, const std::string& source_file, const st
     algo_ = algo;
     culler_ = std::move(culler);
     exact_ = std::move(exact);
+    checkpoints_.clear();
     frozen_from_ = -1;
     history_.resize(std::max(scene_->frames, 1));
     restart();
@@ -62,6 +63,7 @@ bool DebuggerSession::replaceCullers(const std::string& algo, const KnobValues& 
     knobs_ = knobs;
     culler_ = std::move(culler);
     exact_ = std::move(exact);
+    checkpoints_.clear();
     const int target = frame_;
     restart();
     seek(target);
@@ -71,20 +73,42 @@ bool DebuggerSession::replaceCullers(const std::string& algo, const KnobValues& 
 void DebuggerSession::restart() {
     culler_->reset(*scene_);
     if (exact_) exact_->reset(*scene_);
+    known_until_ = -1;
+    replayed_frames_ = 0;
     runFrame(0);
 }
 
 void DebuggerSession::seek(int frame) {
     assert(isOpen());
     frame = std::clamp(frame, 0, std::max(scene_->frames - 1, 0));
-    if (frame < frame_) restart();
-    for (int f = frame_ + 1; f <= frame; ++f) runFrame(f);
+    replayed_frames_ = 0;
+    if (frame == frame_) return;
+    const CullerCheckpoint* from = checkpoints_.latestAtOrBefore(frame);
+    // Forwards, go on from the current state unless a checkpoint is nearer.
+    if (frame > frame_ && (!from || frame_ + 1 >= from->frame)) {
+        runFrames(frame_ + 1, frame);
+        return;
+    }
+    if (!from) {
+        restart();
+        if (frame > 0) runFrames(1, frame);
+        return;
+    }
+    culler_ = from->culler->clone();
+    assert(culler_);  // it was copied once, so it copies again
+    culler_->setDebugCapture(true);
+    runFrames(from->frame, frame);
 }
 
 bool DebuggerSession::step() {
     if (frame_ + 1 >= scene_->frames) return false;
-    runFrame(frame_ + 1);
+    replayed_frames_ = 0;
+    runFrames(frame_ + 1, frame_ + 1);
     return true;
+}
+
+void DebuggerSession::runFrames(int first, int last) {
+    for (int f = first; f <= last; ++f) runFrame(f, f == last || f > known_until_);
 }
 
 void DebuggerSession::setCullingCameraFrozen(bool frozen) {
@@ -93,8 +117,11 @@ void DebuggerSession::setCullingCameraFrozen(bool frozen) {
         // The current frame was culled from exactly this camera, so nothing re-runs.
         frozen_camera_ = culling_camera_;
         frozen_from_ = frame_ + 1;
+        checkpoints_.dropAfter(frozen_from_);  // later ones saw the moving camera
+        known_until_ = std::min(known_until_, frame_);
         return;
     }
+    checkpoints_.dropAfter(frozen_from_);  // later ones saw the frozen camera
     frozen_from_ = -1;
     const int target = frame_;
     restart();
@@ -110,11 +137,15 @@ Camera DebuggerSession::cameraOfFrame(int frame) const {
     return cameraAt(*scene_, scene_->timeOfFrame(frame));
 }
 
-void DebuggerSession::runFrame(int frame) {
+void DebuggerSession::runFrame(int frame, bool full) {
+    checkpoints_.offer(frame, *culler_);
     frame_ = frame;
+    ++replayed_frames_;
     const double t = scene_->timeOfFrame(frame);
     culling_camera_ = cameraOfFrame(frame);
     timedCull(*culler_, *scene_, culling_camera_, t, result_);
+    if (!full) return;
+    known_until_ = std::max(known_until_, frame);
     if (exact_) timedCull(*exact_, *scene_, culling_camera_, t, exact_result_);
     const FrameResult& exact = exactResult();
     classifyObjects(*scene_, result_.pvs, exact.pvs, states_, false_culled_);

@@ -4,8 +4,13 @@
 // GL), so the window, `shot` and tests share it.
 //
 // Cullers keep temporal state, so the session only ever feeds them frames in
-// order: going forwards runs the frames in between, going backwards resets both
-// cullers and runs again from frame 0 (O(target frame) culls).
+// order: going forwards runs the frames in between; going backwards restores the
+// selected culler's latest checkpoint at or before the target (ui/culler_checkpoints.h)
+// and runs on from there, so a step back costs at most a checkpoint interval of
+// culls. Frames replayed on the way, whose statistics are known, are culled by
+// the selected culler alone: the oracle keeps nothing between frames, so it
+// only runs for the frame shown. A culler that cannot be copied (OpenGL) is
+// reset and run again from frame 0.
 #pragma once
 #include <memory>
 #include <string>
@@ -15,6 +20,7 @@
 #include "culling/api/knobs.h"
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
+#include "ui/culler_checkpoints.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
 
@@ -67,6 +73,10 @@ public:
     const std::vector<ObjectState>& states() const { return states_; }  // by object index
     const std::vector<int>& falseCulled() const { return false_culled_; }
     const FrameHistory& history() const { return history_; }
+    // Frames the selected culler culled for the last seek() or step() (1 for a
+    // step forward; a step back: up to the checkpoint interval).
+    int lastReplayedFrames() const { return replayed_frames_; }
+    const CullerCheckpoints& checkpoints() const { return checkpoints_; }
     // The selected culler's internal state at the current frame (its debug
     // capture is on), or null for a culler with nothing to show. Valid until the
     // next frame is culled.
@@ -79,7 +89,12 @@ private:
     // on failure keeps the current ones.
     bool replaceCullers(const std::string& algo, const KnobValues& knobs, std::string& error);
     void restart();  // reset both cullers, run frame 0
-    void runFrame(int frame);
+    // Culls `frame` with the selected culler; with `full` also with the oracle,
+    // and records the frame's states and statistics.
+    void runFrame(int frame, bool full = true);
+    // Runs frames first..last in order; only `last` (and frames whose
+    // statistics are not known yet) in full.
+    void runFrames(int first, int last);
     Camera cameraOfFrame(int frame) const;
 
     KnobValues knobs_;
@@ -98,6 +113,9 @@ private:
     std::vector<ObjectState> states_;
     std::vector<int> false_culled_;
     FrameHistory history_;
+    int known_until_ = -1;  // history slots 0..known_until_ hold this culler's frames
+    CullerCheckpoints checkpoints_;
+    int replayed_frames_ = 0;
 };
 
 }  // namespace gridcull

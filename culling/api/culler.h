@@ -4,6 +4,7 @@
 // jumps backwards. Cullers are made by name through the registry
 // (culling/registry/registry.h), which also says which dimensions each runs on.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,14 @@ public:
     // nullptr otherwise (and always for a culler with nothing to show). Valid
     // until the next cull() or reset().
     virtual const DebugSnapshot* debugSnapshot() const { return nullptr; }
+
+    // A copy of everything this culler keeps between frames, which continues from
+    // the next frame exactly as this one would (the debugger's checkpoints, so a
+    // seek backwards replays a few frames rather than all of them). The copy's
+    // debug capture is as this one's, its snapshot empty until its next cull().
+    // Null for a culler whose state cannot be copied (one that holds GPU
+    // objects); callers then replay from frame 0.
+    virtual std::unique_ptr<Culler> clone() const { return nullptr; }
 };
 
 // Runs culler.cull and sets out.stats.cull_ms from a steady clock.

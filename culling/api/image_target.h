@@ -23,6 +23,7 @@
 // the object's translation. On a GPU a set is one vertex buffer, a part one
 // draw call.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -77,9 +78,37 @@ public:
     // could be written (the range is empty, or outside [near, far]); else sets
     // `written` to the pixels it may have written, at most `image_area` for a
     // target that cannot tell. Never allocates.
-    virtual bool drawTriangles(int handle, int first, int count, int index,
-                               const glm::dvec3& shift, const PixelRect& image_area,
-                               PixelRect& written) = 0;
+    virtual bool drawTriangles(int handle, int first, int count, int index, const glm::dvec3& shift,
+                               const PixelRect& image_area, PixelRect& written) = 0;
+
+    // A copy of the target with its buffers, triangle sets and outstanding
+    // queries (Culler::clone); null for a target that cannot be copied (a GPU's).
+    virtual std::unique_ptr<ImageTarget> clone() const { return nullptr; }
+};
+
+// Owns an image target and copies it with clone(), so that a culler holding one
+// keeps its implicit copy constructor; a target that cannot be copied copies as
+// null, which the culler's clone() then reports.
+class OwnedImageTarget {
+public:
+    OwnedImageTarget() = default;
+    explicit OwnedImageTarget(std::unique_ptr<ImageTarget> target) : target_(std::move(target)) {}
+    OwnedImageTarget(const OwnedImageTarget& other)
+        : target_(other.target_ ? other.target_->clone() : nullptr) {}
+    OwnedImageTarget& operator=(const OwnedImageTarget& other) {
+        if (this != &other) target_ = other.target_ ? other.target_->clone() : nullptr;
+        return *this;
+    }
+    OwnedImageTarget(OwnedImageTarget&&) = default;
+    OwnedImageTarget& operator=(OwnedImageTarget&&) = default;
+
+    ImageTarget* get() const { return target_.get(); }
+    ImageTarget* operator->() const { return target_.get(); }
+    ImageTarget& operator*() const { return *target_; }
+    explicit operator bool() const { return target_ != nullptr; }
+
+private:
+    std::unique_ptr<ImageTarget> target_;
 };
 
 }  // namespace gridcull

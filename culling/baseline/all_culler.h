@@ -12,6 +12,7 @@ public:
     const char* name() const override { return "all"; }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override { return std::make_unique<AllCuller>(*this); }
 };
 
 }  // namespace gridcull

@@ -62,6 +62,14 @@ const ObjectBsp* BspOqCuller::objectTree(int object) const {
     return trees_[size_t(tree_of_[size_t(object)])].get();
 }
 
+std::unique_ptr<Culler> BspOqCuller::clone() const {
+    auto copy = std::make_unique<BspOqCuller>(*this);
+    if (!copy->target_) return nullptr;  // a target that cannot be copied (OpenGL)
+    copy->snapshot_ = BspOqSnapshot{};   // the copy fills its own at its next cull
+    copy->snapshot_.mode = mode_;
+    return copy;
+}
+
 void BspOqCuller::reset(const Scene& scene) {
     scene_ = &scene;
     frame_ = 0;
@@ -87,7 +95,7 @@ void BspOqCuller::reset(const Scene& scene) {
             continue;
         auto [found, added] = tree_of_mesh.emplace(object.mesh.get(), int(trees_.size()));
         if (added) {
-            trees_.push_back(std::make_unique<ObjectBsp>(*object.mesh, params));
+            trees_.push_back(std::make_shared<const ObjectBsp>(*object.mesh, params));
             corners.clear();
             for (const BspTrianglePiece& piece : trees_.back()->pieces())
                 corners.insert(corners.end(), {piece.v[0], piece.v[1], piece.v[2]});
@@ -363,8 +371,8 @@ void BspOqCuller::readBatch() {
         s.skip =
             visible && mode_ == BspOqMode::Full ? bspSkipFrames(s.answers, options_.history) : 0;
         if (s.skip > 0 && options_.skip_spread) {
-            const uint64_t node = uint64_t(uint32_t(it->node.object + 1)) << 32 |
-                                  uint64_t(uint32_t(it->node.node));
+            const uint64_t node =
+                uint64_t(uint32_t(it->node.object + 1)) << 32 | uint64_t(uint32_t(it->node.node));
             s.skip = bspSpreadSkip(s.skip, node * 0x100000001B3ull ^ uint64_t(frame_));
         }
         const int32_t logged = s.query;

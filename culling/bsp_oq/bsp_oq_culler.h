@@ -104,6 +104,7 @@ public:
     const char* name() const override { return name_.c_str(); }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override;
 
     void setDebugCapture(bool on) override { capture_ = on; }
     const DebugSnapshot* debugSnapshot() const override {
@@ -181,7 +182,7 @@ private:
     BspOqMode mode_;
     BspOqOptions options_;
     int resolution_;
-    std::unique_ptr<ImageTarget> target_;
+    OwnedImageTarget target_;  // copied by clone(), null when it cannot be
 
     const Scene* scene_ = nullptr;
     const Camera* camera_ = nullptr;
@@ -194,7 +195,7 @@ private:
     std::vector<int> moved_;   // objects whose box changed this frame
 
     // Object trees: one per distinct mesh, shared by its copies.
-    std::vector<std::unique_ptr<ObjectBsp>> trees_;
+    std::vector<std::shared_ptr<const ObjectBsp>> trees_;  // built by reset(), shared by clones
     std::vector<int> tree_handle_;         // by tree: its triangle set on the target
     std::vector<int> tree_of_;             // by object: index into trees_, -1: none
     std::vector<glm::dvec3> translation_;  // by object: its tree's translation at t

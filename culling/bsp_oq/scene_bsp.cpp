@@ -11,6 +11,35 @@ namespace gridcull {
 
 namespace {
 
+template <class T>
+std::vector<T> copyWithCapacity(const std::vector<T>& v) {
+    std::vector<T> copy;
+    copy.reserve(v.capacity());
+    copy.assign(v.begin(), v.end());
+    return copy;
+}
+
+}  // namespace
+
+SceneBsp::SceneBsp(const SceneBsp& other)
+    : params_(other.params_),
+      nodes_(copyWithCapacity(other.nodes_)),
+      free_head_(other.free_head_),
+      live_nodes_(other.live_nodes_),
+      serial_(other.serial_),
+      objects_(copyWithCapacity(other.objects_)),
+      next_in_node_(copyWithCapacity(other.next_in_node_)),
+      prev_in_node_(copyWithCapacity(other.prev_in_node_)),
+      outside_count_(other.outside_count_),
+      frame_(other.frame_),
+      noted_(copyWithCapacity(other.noted_)),
+      scratch_objects_(copyWithCapacity(other.scratch_objects_)),
+      scratch_keys_(copyWithCapacity(other.scratch_keys_)),
+      scratch_nodes_(copyWithCapacity(other.scratch_nodes_)),
+      sort_scratch_(copyWithCapacity(other.sort_scratch_)) {}
+
+namespace {
+
 // The axes by decreasing extent, ties in axis order (no allocation, unlike
 // std::stable_sort).
 void axesByExtent(const glm::dvec3& e, int order[3]) {

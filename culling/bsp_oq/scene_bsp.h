@@ -128,6 +128,10 @@ public:
     static constexpr int kRoot = 0;
 
     SceneBsp() = default;
+    // A copy keeps the capacities of the original's pool and scratch lists,
+    // which the update relies on to never allocate (and asserts).
+    SceneBsp(const SceneBsp& other);
+    SceneBsp& operator=(const SceneBsp&) = delete;
     // Builds the tree over objects 0..boxes.size()-1 (one box each, world
     // space). Keeps the memory of an earlier build. Cost: O(n log n * depth).
     void build(const SceneBspParams& params, const std::vector<Aabb>& boxes);

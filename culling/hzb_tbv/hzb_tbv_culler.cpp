@@ -35,6 +35,12 @@ HzbTbvCuller::HzbTbvCuller(std::string name, bool use_tbvs, TbvUpdateMode mode,
         options_.validity_s = HzbTbvOptions{}.validity_s;
 }
 
+std::unique_ptr<Culler> HzbTbvCuller::clone() const {
+    auto copy = std::make_unique<HzbTbvCuller>(*this);
+    copy->snapshot_ = HzbTbvSnapshot{};  // the copy fills its own at its next cull
+    return copy;
+}
+
 void HzbTbvCuller::reset(const Scene& scene) {
     frame_ = 0;
     snapshot_.valid = false;

@@ -98,6 +98,7 @@ public:
     const char* name() const override { return name_.c_str(); }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override;
 
     // For tests and the window: the structures as the last frame left them.
     const DynamicOctree& octree() const { return octree_; }

@@ -33,6 +33,13 @@ void LazyGridCuller::imageSize(double aspect, int& width, int& height) const {
     imageSizeForAspect(resolution_, aspect, width, height);
 }
 
+std::unique_ptr<Culler> LazyGridCuller::clone() const {
+    auto copy = std::make_unique<LazyGridCuller>(*this);
+    if (!copy->target_) return nullptr;    // a target that cannot be copied (OpenGL)
+    copy->snapshot_ = LazyGridSnapshot{};  // the copy fills its own at its next cull
+    return copy;
+}
+
 void LazyGridCuller::reset(const Scene& scene) {
     bvh_.build(scene, 0.0);
     target_->prepare(scene);

@@ -77,6 +77,7 @@ public:
     const char* name() const override;
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override;
 
     const LazyGridOptions& options() const { return options_; }
     // Fill snapshot() each frame from now on (off by default).
@@ -119,7 +120,7 @@ private:
     int resolution_ = kDefaultImageResolution;
     BoundingVolumeHierarchy bvh_;
     ScreenMapping mapping_;
-    std::unique_ptr<ImageTarget> target_;
+    OwnedImageTarget target_;  // copied by clone(), null when it cannot be
     std::string name_;
     LazyOcclusionGrid grid_;
     std::vector<ListEntry> test_list_, draw_list_;

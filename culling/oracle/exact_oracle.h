@@ -59,6 +59,7 @@ public:
     const char* name() const override { return "exact"; }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override { return std::make_unique<ExactOracle>(*this); }
 
     // The buffer size used for a camera: long side = `resolution`.
     static void imageSize(int resolution, double aspect, int& width, int& height);

@@ -5,6 +5,19 @@
 
 namespace gridcull {
 
+SoftwareImageTarget::SoftwareImageTarget(const SoftwareImageTarget& other)
+    : ImageTarget(other),
+      zbuffer_(other.zbuffer_),
+      obuffer_(other.obuffer_),
+      occlusion_bits_(other.occlusion_bits_),
+      camera_(other.camera_),
+      in_frame_(other.in_frame_),
+      frame_(other.frame_),
+      latency_(other.latency_),
+      queries_(other.queries_),
+      counts_(other.counts_),
+      triangle_sets_(other.triangle_sets_) {}
+
 long long SoftwarePixelQueries::countFree(const PixelRect& rect) const {
     assert(obuffer_ && "the occlusion-buffer variant needs the occlusion buffer");
     return obuffer_->countFree(rect);

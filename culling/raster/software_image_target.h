@@ -12,6 +12,7 @@
 // culler can be tested against the latency of a GPU's queries.
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -39,6 +40,14 @@ private:
 
 class SoftwareImageTarget final : public ImageTarget {
 public:
+    SoftwareImageTarget() = default;
+    // A copy answers its pixel queries from its own buffers.
+    SoftwareImageTarget(const SoftwareImageTarget& other);
+    SoftwareImageTarget& operator=(const SoftwareImageTarget&) = delete;
+    std::unique_ptr<ImageTarget> clone() const override {
+        return std::make_unique<SoftwareImageTarget>(*this);
+    }
+
     void begin(const Camera& camera, int width, int height, bool occlusion_bits) override;
     void end() override { in_frame_ = false; }
     bool draw(const SceneObject& object, int index, const glm::dvec3& shift,

@@ -22,6 +22,20 @@ RgvcCuller::RgvcCuller(const RgvcOptions& options) : options_(options) {
         options_.validity_s = RgvcOptions{}.validity_s;
 }
 
+std::unique_ptr<Culler> RgvcCuller::clone() const {
+    auto copy = std::make_unique<RgvcCuller>(*this);
+    // inner_boxes_ point into mesh_interiors_: the copy's into its own.
+    for (size_t i = 0; i < inner_boxes_.size(); ++i) {
+        if (!inner_boxes_[i]) continue;
+        for (size_t k = 0; k < mesh_interiors_.size(); ++k)
+            if (inner_boxes_[i] == &mesh_interiors_[k].second)
+                copy->inner_boxes_[i] = &copy->mesh_interiors_[k].second;
+    }
+    // The snapshot points into this culler's matrices; the copy fills its own.
+    copy->snapshot_ = RgvcSnapshot{};
+    return copy;
+}
+
 void RgvcCuller::reset(const Scene& scene) {
     ready_ = true;
     dimensions_ = scene.dimensions;

@@ -126,6 +126,7 @@ public:
     const char* name() const override { return "rgvc"; }
     void reset(const Scene& scene) override;
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override;
+    std::unique_ptr<Culler> clone() const override;
 
     // Fill snapshot() each frame from now on (off by default: it costs a vector
     // entry per visited voxel).

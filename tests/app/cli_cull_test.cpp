@@ -108,5 +108,31 @@ TEST(CliBench, PrintsAlgorithmsSideBySideAndWritesCsv) {
     EXPECT_NE(r.out.find("1.000"), std::string::npos) << r.out;
 }
 
+// bench --seek: the window's step back into a frame replays from a checkpoint
+// (at most its interval of frames), a step forward one frame.
+TEST(CliBench, SeekTimesStepsForwardAndBackThroughCheckpoints) {
+    const CommandResult r = runGridcull("bench '" + sourcePath("scenes/walls-2d.json") +
+                                        "' --algo rgvc,vfc --seek 7,10 --runs 2 --oracle-res 96");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    int rows = 0;
+    while (std::getline(lines, line)) {
+        std::istringstream row(line);
+        std::string algo;
+        int frame = 0, forward_culls = 0, back_culls = 0;
+        double fwd = 0, fwd95 = 0, back = 0, back95 = 0, ratio = 0;
+        if (!(row >> algo >> frame >> fwd >> fwd95 >> back >> back95 >> ratio >> forward_culls >>
+              back_culls))
+            continue;
+        ++rows;
+        EXPECT_EQ(forward_culls, 1) << line;
+        // Into 7 from 8: the checkpoint before frame 4, then 4..7; into 10: 8..10.
+        EXPECT_EQ(back_culls, frame == 7 ? 4 : 3) << line;
+    }
+    EXPECT_EQ(rows, 4) << r.out;
+    EXPECT_NE(r.out.find("rgvc             checkpoints: "), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace gridcull::test

@@ -40,7 +40,10 @@ TEST(CliUsage, BadCommandLinesExitTwo) {
                                             "cull " + scene + " --algo vfc --oracle-res 3",
                                             "cull " + scene + " --algo rgvc --rgvc-validity 0",
                                             "bench " + scene + " --algo rgvc --rgvc-validity nan",
-                                            "bench " + scene + " --algo rgvc --rgvc-grid-res 0"};
+                                            "bench " + scene + " --algo rgvc --rgvc-grid-res 0",
+                                            "bench " + scene + " --algo rgvc --seek 0",
+                                            "bench " + scene + " --algo rgvc --seek 5,x",
+                                            "bench " + scene + " --algo rgvc --seek 999999"};
     for (const std::string& args : cases) {
         const CommandResult r = runGridcull(args);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;

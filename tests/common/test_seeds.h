@@ -6,6 +6,7 @@
 //   GRIDCULL_SEED=17 /path/to/core_tests --gtest_filter=Suite.Test
 #pragma once
 #include <unistd.h>
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -22,6 +23,24 @@ inline std::vector<uint64_t> seedsToRun(uint64_t first, int count) {
     std::vector<uint64_t> seeds;
     for (int i = 0; i < count; ++i) seeds.push_back(first + uint64_t(i));
     return seeds;
+}
+
+// Sanitized builds run the long sweeps on a fifth of their scenes: the
+// sanitizers look for memory and undefined-behaviour errors, which the first
+// scenes already exercise on every code path, at about four times the cost per
+// scene; the full build runs every scene and carries the false-cull counts.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kSanitizedSweepDivisor = 5;
+#else
+constexpr int kSanitizedSweepDivisor = 1;
+#endif
+
+// The scene count of a long sweep: GRIDCULL_SWEEP_SCENES when set (a longer
+// sweep by hand), else `full`, divided by kSanitizedSweepDivisor (at least 1).
+inline int sweepScenes(int full) {
+    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
+        return std::max(1, std::atoi(count));
+    return std::max(1, full / kSanitizedSweepDivisor);
 }
 
 // True when GRIDCULL_SEED picks one seed (tests that count over all their seeds

@@ -10,10 +10,10 @@
 // (blue, sky blue, vermillion, dim grey) and the camera (yellow) leave free,
 // and greys; a node state's colour is its query rectangle's colour too, so a
 // rectangle and the box it was drawn from read alike:
-//   queried hidden white (occluded, as hzb's Z-culled nodes and rgvc's H),
+//   queried hidden white (white means occluded in every family's view),
 //   queried visible bluish green, assumed visible (coherence) orange,
 //   viewer inside reddish purple, in the frustum (bsp-vfc) light grey,
-//   outside the frustum dim grey (as hzb's frustum-culled nodes),
+//   outside the frustum dim grey (as in every family's view),
 //   not reached grey (not known), empty line grey.
 #pragma once
 #include <cstdint>

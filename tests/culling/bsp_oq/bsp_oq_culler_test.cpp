@@ -236,7 +236,9 @@ TEST(BspOqCuller, BatchedRectanglesNeverOverlap) {
                     (long long)totals.largest);
         // Not vacuous: batches of several queries happen, full ones too.
         EXPECT_GT(totals.queries, totals.batches + totals.batches / 4) << "batch " << batch;
-        if (batch == 4) EXPECT_EQ(totals.largest, 4);
+        if (batch == 4) {
+            EXPECT_EQ(totals.largest, 4);
+        }
     }
 }
 

@@ -81,15 +81,9 @@ void report(const std::string& what, size_t scenes, const Totals& t) {
         double(t.parts) / n);
 }
 
-int sweepScenes(int otherwise) {
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
-        return std::max(1, std::atoi(count));
-    return otherwise;
-}
-
 Totals sweep(const std::string& algo, const KnobValues& knobs, uint64_t first_seed, int scenes) {
     Totals totals;
-    const std::vector<uint64_t> seeds = test::seedsToRun(first_seed, sweepScenes(scenes));
+    const std::vector<uint64_t> seeds = test::seedsToRun(first_seed, test::sweepScenes(scenes));
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, algo, knobs, totals); });
     report(algo, seeds.size(), totals);

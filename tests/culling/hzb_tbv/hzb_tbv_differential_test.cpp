@@ -100,15 +100,9 @@ void report(const char* algo, size_t scenes, const Totals& t) {
         double(t.dynamic) / double(std::max<size_t>(1, scenes)));
 }
 
-int sweepScenes(int otherwise) {
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
-        return std::max(1, std::atoi(count));
-    return otherwise;
-}
-
 TEST(HzbTbvDifferential, ExplicitUpdateNeverCullsWhatTheOracleSees) {
     Totals totals;
-    const std::vector<uint64_t> seeds = test::seedsToRun(400000, sweepScenes(500));
+    const std::vector<uint64_t> seeds = test::seedsToRun(400000, test::sweepScenes(500));
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, "hzb-tbv", KnobValues{}, false, totals); });
     report("hzb-tbv", seeds.size(), totals);
@@ -120,7 +114,7 @@ TEST(HzbTbvDifferential, ExplicitUpdateNeverCullsWhatTheOracleSees) {
 
 TEST(HzbTbvDifferential, ImplicitUpdateIsAtMostOneFrameLate) {
     Totals totals;
-    const std::vector<uint64_t> seeds = test::seedsToRun(400000, sweepScenes(200));
+    const std::vector<uint64_t> seeds = test::seedsToRun(400000, test::sweepScenes(200));
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, "hzb-tbvi", KnobValues{}, true, totals); });
     report("hzb-tbvi", seeds.size(), totals);
@@ -129,7 +123,7 @@ TEST(HzbTbvDifferential, ImplicitUpdateIsAtMostOneFrameLate) {
 
 TEST(HzbTbvDifferential, EveryFrameUpdateNeverCullsWhatTheOracleSees) {
     Totals totals;
-    const std::vector<uint64_t> seeds = test::seedsToRun(400000, sweepScenes(100));
+    const std::vector<uint64_t> seeds = test::seedsToRun(400000, test::sweepScenes(100));
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, "hzb", KnobValues{}, false, totals); });
     report("hzb", seeds.size(), totals);

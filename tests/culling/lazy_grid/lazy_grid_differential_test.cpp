@@ -70,7 +70,7 @@ void sweep(const KnobValues& options, const char* label) {
     const std::vector<std::string> names = {"lazy-grid", "lazy-grid-z", "busy-grid",
                                             "busy-grid-tight"};
     std::vector<Totals> totals(names.size());
-    for (uint64_t seed : test::seedsToRun(1, kScenes)) {
+    for (uint64_t seed : test::seedsToRun(1, test::sweepScenes(kScenes))) {
         test::withSeed(seed,
                        [&] { runScene(test::lazyGridRandomScene(seed), options, names, totals); });
     }

@@ -32,7 +32,7 @@ void report(const char* name, size_t scenes, const Totals& totals) {
 
 TEST(Rgvc3dDifferential, NeverCullsWhatTheOracleSees) {
     Totals totals;
-    const int scenes = test::rgvcSweepScenes(500);
+    const int scenes = test::sweepScenes(500);
     const std::vector<uint64_t> seeds = test::seedsToRun(300000, scenes);
     for (const uint64_t seed : seeds)
         test::withSeed(seed, [&] { runScene(seed, RgvcOptions{}, totals); });
@@ -52,14 +52,14 @@ TEST(Rgvc3dDifferential, FixedShortAndLongValidityAndOtherGridsStayConservative)
         options.validity_s = validity;
         options.adaptive_validity = 0;
         SCOPED_TRACE("validity " + std::to_string(validity));
-        for (const uint64_t seed : test::seedsToRun(310000, 30))
+        for (const uint64_t seed : test::seedsToRun(310000, test::sweepScenes(30)))
             test::withSeed(seed, [&] { runScene(seed, options, totals); });
     }
     for (const int resolution : {2, 61}) {
         RgvcOptions options;
         options.grid_resolution = resolution;
         SCOPED_TRACE("resolution " + std::to_string(resolution));
-        for (const uint64_t seed : test::seedsToRun(320000, 30))
+        for (const uint64_t seed : test::seedsToRun(320000, test::sweepScenes(30)))
             test::withSeed(seed, [&] { runScene(seed, options, totals); });
     }
     EXPECT_EQ(totals.false_culls, 0);

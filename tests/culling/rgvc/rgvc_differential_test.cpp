@@ -97,7 +97,7 @@ TEST(RgvcDifferential, GridResolutionOverrideStaysConservative) {
 }
 
 TEST(RgvcSweep, Full) {
-    const int scenes = test::rgvcSweepScenes(1000);
+    const int scenes = test::sweepScenes(1000);
     RgvcSweepTotals totals;
     const std::vector<uint64_t> seeds = test::seedsToRun(100000, scenes);
     for (const uint64_t seed : seeds)

@@ -81,11 +81,5 @@ inline void rgvcSweepReport(const char* dims, const char* name, size_t scenes, i
         double(t.objects) / n, double(t.voxels_visited) / n);
 }
 
-// GRIDCULL_SWEEP_SCENES, when set, or `otherwise`: the scene count of a sweep.
-inline int rgvcSweepScenes(int otherwise) {
-    if (const char* count = std::getenv("GRIDCULL_SWEEP_SCENES"))
-        return std::max(1, std::atoi(count));
-    return otherwise;
-}
 
 }  // namespace gridcull::test

@@ -1,0 +1,95 @@
+#include "ui/culler_checkpoints.h"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace gridcull {
+
+namespace {
+
+// Bytes allocated: in the arenas, and in chunks big enough to be mapped alone.
+size_t heapInUse() {
+    const struct mallinfo2 info = mallinfo2();
+    return info.uordblks + info.hblkhd;
+}
+
+}  // namespace
+
+CullerCheckpoints::CullerCheckpoints(size_t budget_bytes, int interval)
+    : budget_(budget_bytes), interval_(std::max(interval, 1)) {}
+
+void CullerCheckpoints::clear() {
+    saved_.clear();
+    bytes_ = 0;
+    enabled_ = true;
+}
+
+void CullerCheckpoints::offer(int frame, const Culler& culler) {
+    if (!enabled_ || frame % interval_ != 0) return;
+    const auto at = std::lower_bound(saved_.begin(), saved_.end(), frame,
+                                     [](const CullerCheckpoint& c, int f) { return c.frame < f; });
+    if (at != saved_.end() && at->frame == frame) return;
+    const size_t before = heapInUse();
+    std::unique_ptr<Culler> copy = culler.clone();
+    if (!copy) {
+        clear();
+        enabled_ = false;
+        return;
+    }
+    const size_t after = heapInUse();
+    const size_t bytes = after > before ? after - before : 0;
+    saved_.insert(at, CullerCheckpoint{frame, std::move(copy), bytes});
+    bytes_ += bytes;
+    if (bytes_ > budget_) thin(frame);
+}
+
+const CullerCheckpoint* CullerCheckpoints::latestAtOrBefore(int frame) const {
+    const auto after =
+        std::upper_bound(saved_.begin(), saved_.end(), frame,
+                         [](int f, const CullerCheckpoint& c) { return f < c.frame; });
+    return after == saved_.begin() ? nullptr : &*(after - 1);
+}
+
+void CullerCheckpoints::dropAfter(int frame) {
+    while (!saved_.empty() && saved_.back().frame > frame) {
+        bytes_ -= saved_.back().bytes;
+        saved_.pop_back();
+    }
+}
+
+int CullerCheckpoints::widestGap() const {
+    int widest = interval_;
+    for (size_t i = 1; i < saved_.size(); ++i)
+        widest = std::max(widest, saved_[i].frame - saved_[i - 1].frame);
+    return widest;
+}
+
+void CullerCheckpoints::thin(int current) {
+    // Frame 0's checkpoint and the newest stay: every seek has a start, and the
+    // user is where the newest was taken.
+    while (bytes_ > budget_ && saved_.size() > 2) {
+        size_t drop = 0;
+        int best_gap = 0, best_distance = 0;
+        for (size_t i = 1; i + 1 < saved_.size(); ++i) {
+            const int distance = std::abs(saved_[i].frame - current);
+            const int gap = saved_[i + 1].frame - saved_[i - 1].frame;
+            const bool far = distance > kNearCheckpointFrames;
+            const bool best_far = best_distance > kNearCheckpointFrames;
+            // Far before near; then the smallest gap left; then the farthest.
+            const bool better = drop == 0 || (far && !best_far) ||
+                                (far == best_far &&
+                                 (gap < best_gap || (gap == best_gap && distance > best_distance)));
+            if (better) {
+                drop = i;
+                best_gap = gap;
+                best_distance = distance;
+            }
+        }
+        bytes_ -= saved_[drop].bytes;
+        saved_.erase(saved_.begin() + std::ptrdiff_t(drop));
+    }
+}
+
+}  // namespace gridcull
