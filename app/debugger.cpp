@@ -1,6 +1,7 @@
 #include "app/debugger.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include "app/hover_pick.h"
@@ -101,6 +102,8 @@ void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
 }
 
 void Debugger::advancePlayback(double seconds) {
+    session_.pollSeek();
+    if (session_.seeking()) return;  // the frame shown waits for the seek
     if (!playing_) return;
     const double dt = session_.scene().dt;
     play_clock_ += seconds;
@@ -143,6 +146,11 @@ FrameSnapshot Debugger::snapshot() const {
     s.frame = session_.frame();
     s.t = session_.t();
     s.playing = playing_;
+    s.seek_target = session_.seeking() ? session_.seekTarget() : -1;
+    s.seek_progress = session_.seeking() ? session_.seekProgress() : 0.0;
+    s.checkpointing = checkpointing_;
+    s.knobs = &session_.knobs();
+    s.knob_cost = knob_cost_;
     s.algo_names = &algo_names_;
     s.algo_index = indexOfName(algo_names_, session_.algo());
     s.result = &session_.result();
@@ -162,7 +170,17 @@ FrameSnapshot Debugger::snapshot() const {
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
+    noteCheckpoints();
     return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_, familyContext());
+}
+
+void Debugger::noteCheckpoints() {
+    if (session_.seeking()) return;
+    const CullerCheckpoints& saved = session_.checkpoints();
+    checkpointing_.count = saved.count();
+    checkpointing_.interval = saved.interval();
+    checkpointing_.bytes = saved.bytes();
+    checkpointing_.budget = saved.budget();
 }
 
 void Debugger::setViewMode(ViewMode mode) {
@@ -216,9 +234,10 @@ void Debugger::apply(const UiActions& actions) {
     const PlaybackAction& playback = actions.playback;
     if (playback.toggle_play) togglePlay();
     if (playback.step) stepForward();
+    if (playback.cancel_seek) session_.cancelSeek();
     if (playback.seek_frame >= 0) {
         playing_ = false;
-        session_.seek(playback.seek_frame);
+        session_.seekInBackground(playback.seek_frame);
     }
     const AlgorithmAction& algorithm = actions.algorithm;
     if (algorithm.select_algo && *algorithm.select_algo >= 0 &&
@@ -227,27 +246,8 @@ void Debugger::apply(const UiActions& actions) {
     if (algorithm.freeze_culling) session_.setCullingCameraFrozen(*algorithm.freeze_culling);
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
-    if (!actions.family.knobs.empty()) {
-        // Checked like the command line's values: a panel asking for a knob that
-        // is not there, or out of its range, is a bug to show, not to ignore.
-        KnobValues knobs = session_.knobs();
-        std::string error;
-        for (const auto& [flag, value] : actions.family.knobs) {
-            const Knob* knob = findKnob(flag);
-            char text[32];
-            std::snprintf(text, sizeof text, "%.17g", value);
-            double checked = 0.0;
-            if (!knob) {
-                error = "the panel set --" + flag + ", which is no knob";
-            } else if (parseKnobValue(*knob, text, checked, error)) {
-                knobs.set(flag, checked);
-                continue;
-            }
-            scene_errors_ = {error};
-            return;
-        }
-        if (!session_.setKnobs(knobs, error)) scene_errors_ = {error};
-    }
+    if (!actions.family.knobs.empty()) applyKnobs(actions.family.knobs, {});
+    if (actions.knobs.apply) applyKnobs(actions.knobs.set, actions.knobs.unset);
 }
 
 bool Debugger::throughCullingCamera() const {
@@ -275,6 +275,60 @@ void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, dou
     input.family_context = &context;
     last_draw_ms_ = renderer_.draw(input);
     session_.recordDrawMs(last_draw_ms_);
+}
+
+namespace {
+
+// Median cull time and summed PVS over summed exact visible, frames 0..last.
+void runFigures(const FrameHistory& history, int last, double& median_ms, double& ratio) {
+    std::vector<float> ms(history.cull_ms.begin(), history.cull_ms.begin() + last + 1);
+    std::nth_element(ms.begin(), ms.begin() + std::ptrdiff_t(ms.size() / 2), ms.end());
+    median_ms = ms[ms.size() / 2];
+    double pvs = 0.0, exact = 0.0;
+    for (int f = 0; f <= last; ++f) {
+        pvs += history.pvs_size[size_t(f)];
+        exact += history.exact_visible[size_t(f)];
+    }
+    ratio = exact > 0.0 ? pvs / exact : 0.0;
+}
+
+}  // namespace
+
+void Debugger::applyKnobs(const std::vector<std::pair<std::string, double>>& set,
+                          const std::vector<std::string>& unset) {
+    // Checked like the command line's values: a panel asking for a knob that
+    // is not there, or out of its range, is a bug to show, not to ignore.
+    KnobValues knobs = session_.knobs();
+    std::string error;
+    for (const auto& [flag, value] : set) {
+        const Knob* knob = findKnob(flag);
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", value);
+        double checked = 0.0;
+        if (!knob) {
+            error = "the panel set --" + flag + ", which is no knob";
+        } else if (parseKnobValue(*knob, text, checked, error)) {
+            knobs.set(flag, checked);
+            continue;
+        }
+        scene_errors_ = {error};
+        return;
+    }
+    for (const std::string& flag : unset) knobs.unset(flag);
+    KnobApplyCost cost;
+    const int last = session_.frame();
+    runFigures(session_.history(), last, cost.cull_ms_before, cost.pvs_ratio_before);
+    const auto start = std::chrono::steady_clock::now();
+    if (!session_.setKnobs(knobs, error)) {
+        scene_errors_ = {error};
+        return;
+    }
+    cost.rerun_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    cost.frames = last + 1;
+    runFigures(session_.history(), last, cost.cull_ms_after, cost.pvs_ratio_after);
+    cost.valid = true;
+    knob_cost_ = cost;
 }
 
 }  // namespace gridcull

@@ -58,6 +58,8 @@ public:
     void stepForward();
     void stepBack();
     void toggleFreeze();
+    // Stops a seek running in the background (the view stays where it was).
+    void cancelSeek() { session_.cancelSeek(); }
     // Opens a scene file as the scene panel does; on failure the panel shows why.
     void openSceneFile(const std::string& path);
 
@@ -70,8 +72,17 @@ public:
     void drawScene(const WindowLayout& layout, int framebuffer_height, double scale = 1.0);
     double lastDrawMs() const { return last_draw_ms_; }
 
-private:
+    // What the panels are shown this frame.
     FrameSnapshot snapshot() const;
+
+private:
+    // Copies the session's checkpoint figures for the panels (not read while a
+    // background seek is using the checkpoints).
+    void noteCheckpoints();
+    // Re-makes the cullers with knobs set and unset (checked as the command
+    // line checks them) and records what the re-run cost for the knobs panel.
+    void applyKnobs(const std::vector<std::pair<std::string, double>>& set,
+                    const std::vector<std::string>& unset);
     FamilyViewContext familyContext() const;
     // Points family_view_ at the selected algorithm's family's view, made the
     // first time that family is selected and kept after, so its state (toggles,
@@ -93,6 +104,8 @@ private:
     bool show_timings_ = true;
     double play_clock_ = 0.0;
     double last_draw_ms_ = 0.0;
+    Checkpointing checkpointing_;
+    KnobApplyCost knob_cost_;
     int hovered_index_ = -1;
     double hovered_distance_ = 0.0;
     // One view per family shown so far, by family id, and the selected

@@ -8,16 +8,16 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
 #include "app/debugger.h"
 #include "app/gl_api.h"
 #include "app/gl_context.h"
 #include "app/imgui_runtime.h"
+#include "app/input_queue.h"
 #include "app/offscreen_target.h"
 #include "app/png_file.h"
-#include "app/window_input.h"
+#include "app/window_frame.h"
 #include "ui/layout.h"
 
 namespace gridcull {
@@ -28,7 +28,6 @@ namespace {
 // tables take a frame or two to reach their final layout.
 constexpr int kShotSettleFrames = 3;
 constexpr float kShotDeltaTime = 1.0f / 60.0f;
-const float kClear[4] = {0.10f, 0.11f, 0.13f, 1.0f};
 
 // What a `--view` name draws: panels or not, and from which camera.
 bool parseView(const std::string& view, bool& panels, ViewMode& mode) {
@@ -73,6 +72,8 @@ int runWindow(const Scene& scene, const ViewOptions& options) {
         std::cerr << "gridcull: " << error << "\n";
         return 1;
     }
+    InputQueue input;
+    InputQueue::install(window.get(), &input);
     std::vector<double> draw_ms;
     draw_ms.reserve(size_t(std::max(options.exit_after_frames, 0)));
     int frames = 0;
@@ -85,23 +86,8 @@ int runWindow(const Scene& scene, const ViewOptions& options) {
             glfwWaitEvents();  // minimised
             continue;
         }
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        const WindowLayout layout = computeLayout(width, height, true);
-        handleWindowInput(debugger, window.get(), layout);
-        debugger.advancePlayback(ImGui::GetIO().DeltaTime);
-        const UiActions actions = debugger.drawUi(layout);
-        ImGui::Render();
-
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, fb_width, fb_height);
-        glClearColor(kClear[0], kClear[1], kClear[2], kClear[3]);
-        glClear(GL_COLOR_BUFFER_BIT);
-        debugger.drawScene(layout, fb_height, double(fb_width) / width);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        drawWindowFrame(debugger, window.get(), input, width, height, fb_width, fb_height);
         glfwSwapBuffers(window.get());
-        debugger.apply(actions);
 
         if (options.exit_after_frames > 0) {
             draw_ms.push_back(debugger.lastDrawMs());
@@ -159,7 +145,7 @@ bool renderShot(const Scene& scene, const ViewOptions& options, const std::strin
     }
     target.bind();
     glViewport(0, 0, width, height);
-    glClearColor(kClear[0], kClear[1], kClear[2], kClear[3]);
+    glClearColor(kWindowClear[0], kWindowClear[1], kWindowClear[2], kWindowClear[3]);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     debugger.drawScene(layout, height);
     if (panels) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -39,6 +39,7 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
         debugger.apply(actions);
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) debugger.toggleFreeze();
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) debugger.cancelSeek();
     if (dimensions3 && debugger.viewMode() == ViewMode::Fly) {
         auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0 : 0.0; };
         const glm::dvec3 move(down(GLFW_KEY_D) - down(GLFW_KEY_A),

@@ -4,7 +4,6 @@
 #include <cassert>
 
 #include "culling/registry/registry.h"
-#include "ui/object_states.h"
 
 namespace gridcull {
 
@@ -31,14 +30,16 @@ bool makeCullers(const Scene& scene, const std::string& algo, const KnobValues& 
 
 bool DebuggerSession::open(Scene scene, const std::string& source_file, const std::string& algo,
                            std::string& error) {
+    cancelSeek();
     std::unique_ptr<Culler> culler, exact;
     if (!makeCullers(scene, algo, knobs_, culler, exact, error)) return false;
     scene_ = std::make_unique<Scene>(std::move(scene));
     scene_file_ = source_file;
     ++scene_generation_;
     algo_ = algo;
-    culler_ = std::move(culler);
-    exact_ = std::move(exact);
+    live_ = CullingRun{};
+    live_.culler = std::move(culler);
+    live_.exact = std::move(exact);
     checkpoints_.clear();
     frozen_from_ = -1;
     history_.resize(std::max(scene_->frames, 1));
@@ -57,105 +58,131 @@ bool DebuggerSession::setKnobs(const KnobValues& knobs, std::string& error) {
 bool DebuggerSession::replaceCullers(const std::string& algo, const KnobValues& knobs,
                                      std::string& error) {
     assert(isOpen());
+    cancelSeek();
     std::unique_ptr<Culler> culler, exact;
     if (!makeCullers(*scene_, algo, knobs, culler, exact, error)) return false;
     algo_ = algo;
     knobs_ = knobs;
-    culler_ = std::move(culler);
-    exact_ = std::move(exact);
+    live_.culler = std::move(culler);
+    live_.exact = std::move(exact);
     checkpoints_.clear();
-    const int target = frame_;
+    const int target = live_.frame;
     restart();
     seek(target);
     return true;
 }
 
+RunContext DebuggerSession::context() {
+    RunContext context;
+    context.scene = scene_.get();
+    context.checkpoints = &checkpoints_;
+    context.history = &history_;
+    context.frozen_from = frozen_from_;
+    context.frozen_camera = frozen_camera_;
+    return context;
+}
+
 void DebuggerSession::restart() {
-    culler_->reset(*scene_);
-    if (exact_) exact_->reset(*scene_);
-    known_until_ = -1;
-    replayed_frames_ = 0;
-    runFrame(0);
+    live_.culler->reset(*scene_);
+    if (live_.exact) live_.exact->reset(*scene_);
+    live_.known_until = -1;
+    live_.replayed = 0;
+    runFrame(live_, context(), 0, true);
+}
+
+const CullerCheckpoint* DebuggerSession::seekStart(int frame, int& first) const {
+    const CullerCheckpoint* from = checkpoints_.latestAtOrBefore(frame);
+    // Forwards, go on from the current state unless a checkpoint is nearer.
+    if (frame > live_.frame && (!from || live_.frame + 1 >= from->frame)) {
+        first = live_.frame + 1;
+        return nullptr;
+    }
+    first = from ? from->frame : 0;
+    return from;
 }
 
 void DebuggerSession::seek(int frame) {
     assert(isOpen());
+    cancelSeek();
     frame = std::clamp(frame, 0, std::max(scene_->frames - 1, 0));
-    replayed_frames_ = 0;
-    if (frame == frame_) return;
-    const CullerCheckpoint* from = checkpoints_.latestAtOrBefore(frame);
-    // Forwards, go on from the current state unless a checkpoint is nearer.
-    if (frame > frame_ && (!from || frame_ + 1 >= from->frame)) {
-        runFrames(frame_ + 1, frame);
-        return;
-    }
-    if (!from) {
+    live_.replayed = 0;
+    if (frame == live_.frame) return;
+    int first = 0;
+    const CullerCheckpoint* from = seekStart(frame, first);
+    if (from) {
+        live_.culler = from->culler->clone();
+        assert(live_.culler);  // it was copied once, so it copies again
+        live_.culler->setDebugCapture(true);
+    } else if (first == 0) {
         restart();
-        if (frame > 0) runFrames(1, frame);
-        return;
+        first = 1;
     }
-    culler_ = from->culler->clone();
-    assert(culler_);  // it was copied once, so it copies again
-    culler_->setDebugCapture(true);
-    runFrames(from->frame, frame);
+    if (first <= frame) runFrames(live_, context(), first, frame);
 }
 
-bool DebuggerSession::step() {
-    if (frame_ + 1 >= scene_->frames) return false;
-    replayed_frames_ = 0;
-    runFrames(frame_ + 1, frame_ + 1);
+void DebuggerSession::seekInBackground(int frame) {
+    assert(isOpen());
+    cancelSeek();
+    frame = std::clamp(frame, 0, std::max(scene_->frames - 1, 0));
+    int first = 0;
+    const CullerCheckpoint* from = seekStart(frame, first);
+    const bool restarts = !from && first == 0;
+    if (frame == live_.frame || frame - first + 1 <= kForegroundSeekFrames) return seek(frame);
+    // The worker's copies: the checkpoint's state, or the current one going
+    // forwards, or a fresh culler for a restart (copied before its reset).
+    CullingRun run;
+    run.culler = from ? from->culler->clone() : live_.culler->clone();
+    run.exact = live_.exact ? live_.exact->clone() : nullptr;
+    if (!run.culler || (live_.exact && !run.exact)) return seek(frame);
+    run.culler->setDebugCapture(true);
+    run.frame = live_.frame;
+    run.known_until = live_.known_until;
+    if (restarts) {
+        run.culler->reset(*scene_);
+        if (run.exact) run.exact->reset(*scene_);
+        run.known_until = -1;
+    }
+    seek_job_.start(std::move(run), context(), history_, first, frame);
+}
+
+void DebuggerSession::cancelSeek() {
+    seek_job_.cancel();
+}
+
+bool DebuggerSession::pollSeek() {
+    if (!seek_job_.active() || !seek_job_.finished()) return false;
+    seek_job_.take(live_, history_);
     return true;
 }
 
-void DebuggerSession::runFrames(int first, int last) {
-    for (int f = first; f <= last; ++f) runFrame(f, f == last || f > known_until_);
+bool DebuggerSession::step() {
+    cancelSeek();
+    if (live_.frame + 1 >= scene_->frames) return false;
+    live_.replayed = 0;
+    runFrames(live_, context(), live_.frame + 1, live_.frame + 1);
+    return true;
 }
 
 void DebuggerSession::setCullingCameraFrozen(bool frozen) {
     if (frozen == cullingCameraFrozen()) return;
+    cancelSeek();
     if (frozen) {
         // The current frame was culled from exactly this camera, so nothing re-runs.
-        frozen_camera_ = culling_camera_;
-        frozen_from_ = frame_ + 1;
+        frozen_camera_ = live_.culling_camera;
+        frozen_from_ = live_.frame + 1;
         checkpoints_.dropAfter(frozen_from_);  // later ones saw the moving camera
-        known_until_ = std::min(known_until_, frame_);
+        live_.known_until = std::min(live_.known_until, live_.frame);
         return;
     }
     checkpoints_.dropAfter(frozen_from_);  // later ones saw the frozen camera
     frozen_from_ = -1;
-    const int target = frame_;
+    const int target = live_.frame;
     restart();
     seek(target);
 }
 
 void DebuggerSession::recordDrawMs(double ms) {
-    history_.draw_ms[size_t(frame_)] = float(ms);
-}
-
-Camera DebuggerSession::cameraOfFrame(int frame) const {
-    if (frozen_from_ >= 0 && frame >= frozen_from_) return frozen_camera_;
-    return cameraAt(*scene_, scene_->timeOfFrame(frame));
-}
-
-void DebuggerSession::runFrame(int frame, bool full) {
-    checkpoints_.offer(frame, *culler_);
-    frame_ = frame;
-    ++replayed_frames_;
-    const double t = scene_->timeOfFrame(frame);
-    culling_camera_ = cameraOfFrame(frame);
-    timedCull(*culler_, *scene_, culling_camera_, t, result_);
-    if (!full) return;
-    known_until_ = std::max(known_until_, frame);
-    if (exact_) timedCull(*exact_, *scene_, culling_camera_, t, exact_result_);
-    const FrameResult& exact = exactResult();
-    classifyObjects(*scene_, result_.pvs, exact.pvs, states_, false_culled_);
-
-    const size_t slot = size_t(frame);
-    history_.pvs_size[slot] = float(result_.pvs.size());
-    history_.exact_visible[slot] = float(exact.pvs.size());
-    history_.false_culls[slot] = float(false_culled_.size());
-    history_.cull_ms[slot] = float(result_.stats.cull_ms);
-    history_.draw_ms[slot] = 0.0f;
+    history_.draw_ms[size_t(live_.frame)] = float(ms);
 }
 
 }  // namespace gridcull

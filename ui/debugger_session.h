@@ -11,6 +11,11 @@
 // the selected culler alone: the oracle keeps nothing between frames, so it
 // only runs for the frame shown. A culler that cannot be copied (OpenGL) is
 // reset and run again from frame 0.
+//
+// A long seek can run on a worker thread instead (seekInBackground), over copies
+// of the cullers, while the session goes on showing the frame it was at; the
+// window polls it once per frame, shows its progress and can cancel it. Every
+// other call that changes the session cancels a running one first.
 #pragma once
 #include <memory>
 #include <string>
@@ -20,11 +25,16 @@
 #include "culling/api/knobs.h"
 #include "culling/scene/camera.h"
 #include "culling/scene/scene.h"
+#include "ui/background_seek.h"
 #include "ui/culler_checkpoints.h"
+#include "ui/culling_run.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
 
 namespace gridcull {
+
+// A seek that culls more frames than this runs in the background when asked to.
+constexpr int kForegroundSeekFrames = 8;
 
 class DebuggerSession {
 public:
@@ -48,6 +58,19 @@ public:
 
     // Shows `frame`, clamped to the scene's frames.
     void seek(int frame);
+    // As seek(), but on a worker thread when it would cull more than
+    // kForegroundSeekFrames frames and the culler can be copied. Until pollSeek()
+    // adopts it, every accessor still shows the frame the session was at.
+    void seekInBackground(int frame);
+    // A background seek is running (or done and not yet adopted).
+    bool seeking() const { return seek_job_.active(); }
+    // Its target frame and the share of its frames culled (0 to 1).
+    int seekTarget() const { return seek_job_.target(); }
+    double seekProgress() const { return seek_job_.progress(); }
+    // Stops a background seek; the session stays where it was.
+    void cancelSeek();
+    // Adopts a finished background seek; true when it did (the frame changed).
+    bool pollSeek();
     // One frame forward; false (and nothing done) at the last frame.
     bool step();
     // Frozen: the cullers see the culling camera where it is now at every later
@@ -62,26 +85,28 @@ public:
     const std::string& sceneFile() const { return scene_file_; }
     // Changes whenever open() installs a new scene (renderers re-upload on change).
     int sceneGeneration() const { return scene_generation_; }
-    int frame() const { return frame_; }
-    double t() const { return scene_->timeOfFrame(frame_); }
+    int frame() const { return live_.frame; }
+    double t() const { return scene_->timeOfFrame(live_.frame); }
     const std::string& algo() const { return algo_; }
     bool cullingCameraFrozen() const { return frozen_from_ >= 0; }
     // The camera the cullers used for the current frame.
-    const Camera& cullingCamera() const { return culling_camera_; }
-    const FrameResult& result() const { return result_; }
-    const FrameResult& exactResult() const { return exact_ ? exact_result_ : result_; }
-    const std::vector<ObjectState>& states() const { return states_; }  // by object index
-    const std::vector<int>& falseCulled() const { return false_culled_; }
+    const Camera& cullingCamera() const { return live_.culling_camera; }
+    const FrameResult& result() const { return live_.result; }
+    const FrameResult& exactResult() const { return live_.exactResult(); }
+    const std::vector<ObjectState>& states() const { return live_.states; }  // by object index
+    const std::vector<int>& falseCulled() const { return live_.false_culled; }
     const FrameHistory& history() const { return history_; }
     // Frames the selected culler culled for the last seek() or step() (1 for a
-    // step forward; a step back: up to the checkpoint interval).
-    int lastReplayedFrames() const { return replayed_frames_; }
+    // step forward; a step back: up to the checkpoint interval), background
+    // seeks included.
+    int lastReplayedFrames() const { return live_.replayed; }
+    // Not while seeking(): a background seek is using them.
     const CullerCheckpoints& checkpoints() const { return checkpoints_; }
     // The selected culler's internal state at the current frame (its debug
     // capture is on), or null for a culler with nothing to show. Valid until the
     // next frame is culled.
     const DebugSnapshot* debugSnapshot() const {
-        return culler_ ? culler_->debugSnapshot() : nullptr;
+        return live_.culler ? live_.culler->debugSnapshot() : nullptr;
     }
 
 private:
@@ -89,33 +114,23 @@ private:
     // on failure keeps the current ones.
     bool replaceCullers(const std::string& algo, const KnobValues& knobs, std::string& error);
     void restart();  // reset both cullers, run frame 0
-    // Culls `frame` with the selected culler; with `full` also with the oracle,
-    // and records the frame's states and statistics.
-    void runFrame(int frame, bool full = true);
-    // Runs frames first..last in order; only `last` (and frames whose
-    // statistics are not known yet) in full.
-    void runFrames(int first, int last);
-    Camera cameraOfFrame(int frame) const;
+    RunContext context();
+    // Where a seek to `frame` starts: the frame to cull first and, when that is
+    // a checkpoint's, the checkpoint (null: go on from the current frame, or
+    // restart when first is 0 and frame() is not before it).
+    const CullerCheckpoint* seekStart(int frame, int& first) const;
 
     KnobValues knobs_;
     std::unique_ptr<Scene> scene_;
     std::string scene_file_;
     int scene_generation_ = 0;
     std::string algo_;
-    std::unique_ptr<Culler> culler_;
-    std::unique_ptr<Culler> exact_;  // null when the selected culler is the oracle
-    int frame_ = 0;
+    CullingRun live_;       // what the window shows
     int frozen_from_ = -1;  // first frame culled from frozen_camera_, or -1
     Camera frozen_camera_;
-    Camera culling_camera_;
-    FrameResult result_;
-    FrameResult exact_result_;
-    std::vector<ObjectState> states_;
-    std::vector<int> false_culled_;
     FrameHistory history_;
-    int known_until_ = -1;  // history slots 0..known_until_ hold this culler's frames
     CullerCheckpoints checkpoints_;
-    int replayed_frames_ = 0;
+    BackgroundSeek seek_job_;  // declared last: stopped before what it uses goes
 };
 
 }  // namespace gridcull

@@ -13,7 +13,7 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const Wi
                          FamilyView* family, const FamilyViewContext& family_context) {
     assert(snapshot.scene && snapshot.algo_names && snapshot.result && snapshot.exact &&
            snapshot.false_culled && snapshot.history && snapshot.scene_file &&
-           snapshot.scene_errors);
+           snapshot.scene_errors && snapshot.knobs);
     UiActions actions;
 
     const WindowRect& column = layout.panels;
@@ -30,6 +30,7 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const Wi
         actions.algorithm = drawAlgorithmPanel(snapshot);
         // The family's own panel right under the culler that fills it.
         if (family) family->drawPanel(family_context, actions.family);
+        actions.knobs = drawKnobsPanel(snapshot, state.knobs);
         drawStatsPanel(snapshot, state.stats);
         drawHoverPanel(snapshot);
         drawLegendPanel(snapshot);

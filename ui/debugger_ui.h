@@ -1,11 +1,12 @@
 // All the debugger's panels for one frame, in one column at a fixed place on the
 // right: scene, playback, algorithm and cameras, the selected family's own panel
-// (ui/family_view.h), statistics, the object under the mouse, legend. Returns
-// what the user asked for; the app applies it after the frame.
+// (ui/family_view.h), the knobs (collapsed until opened), statistics, the object under the mouse,
+// legend. Returns what the user asked for; the app applies it after the frame.
 #pragma once
 #include "ui/algorithm_panel.h"
 #include "ui/family_view.h"
 #include "ui/frame_snapshot.h"
+#include "ui/knobs_panel.h"
 #include "ui/layout.h"
 #include "ui/playback_panel.h"
 #include "ui/scene_panel.h"
@@ -17,6 +18,7 @@ namespace gridcull {
 struct UiState {
     StatsPanelState stats;
     ScenePanelState scene;
+    KnobsPanelState knobs;
 };
 
 struct UiActions {
@@ -24,6 +26,7 @@ struct UiActions {
     AlgorithmAction algorithm;
     SceneAction scene;
     FamilyAction family;
+    KnobsAction knobs;
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the

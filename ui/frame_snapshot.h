@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "culling/api/culler.h"
+#include "culling/api/knobs.h"
 #include "culling/scene/scene.h"
 #include "grid/aabb.h"
 #include "ui/object_state.h"
@@ -37,11 +38,33 @@ struct HoverInfo {
     double distance = 0.0;  // 3D: along the mouse ray; 2D: 0
 };
 
+// The session's checkpoints, as the playback panel reports them.
+struct Checkpointing {
+    int count = 0;  // 0: none (the culler cannot be copied, or nothing run yet)
+    int interval = 0;
+    size_t bytes = 0;
+    size_t budget = 0;
+};
+
+// What the last change of knobs in the window cost (shown beside the knobs).
+struct KnobApplyCost {
+    bool valid = false;
+    int frames = 0;                 // frames re-run to come back to where the user was
+    double rerun_ms = 0.0;          // wall time of that re-run
+    double cull_ms_before = 0.0;    // median cull time over those frames, old knobs
+    double cull_ms_after = 0.0;     // the same with the new ones
+    double pvs_ratio_before = 0.0;  // PVS over exact visible, summed over those frames
+    double pvs_ratio_after = 0.0;
+};
+
 struct FrameSnapshot {
     const Scene* scene = nullptr;
     int frame = 0;
     double t = 0.0;
     bool playing = false;
+    int seek_target = -1;        // a background seek's target, or -1
+    double seek_progress = 0.0;  // its share of frames culled, 0 to 1
+    Checkpointing checkpointing;
 
     // The algorithms the window offers for this scene (those of the registry that
     // run on its dimension), and the selected one.
@@ -51,6 +74,8 @@ struct FrameSnapshot {
     const FrameResult* exact = nullptr;              // the oracle at `frame`
     const std::vector<int>* false_culled = nullptr;  // ids, ascending
     const FrameHistory* history = nullptr;
+    const KnobValues* knobs = nullptr;  // the values the cullers were made with
+    KnobApplyCost knob_cost;
 
     HoverInfo hover;
     double draw_ms = 0.0;      // CPU time of the last scene draw, up to glFinish

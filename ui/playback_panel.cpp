@@ -1,6 +1,7 @@
 #include "ui/playback_panel.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <imgui.h>
 
@@ -28,9 +29,30 @@ PlaybackAction drawPlaybackPanel(const FrameSnapshot& snapshot) {
 
     int frame = snapshot.frame;
     ImGui::SetNextItemWidth(-60);
-    // Going backwards re-runs the cullers from frame 0: they keep temporal state.
+    // Going backwards re-runs the cullers from their latest checkpoint: they
+    // keep temporal state.
     if (ImGui::SliderInt("frame", &frame, 0, last)) action.seek_frame = frame;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space: play/pause, arrows: step");
+    if (ImGui::IsItemHovered()) {
+        const Checkpointing& saved = snapshot.checkpointing;
+        if (saved.count > 0)
+            ImGui::SetTooltip(
+                "Space: play/pause, arrows: step, Esc: cancel a seek\n"
+                "Going back restores a saved state of the culler and runs on from it:\n"
+                "%d saved, every %d frames near this one (%.0f MiB of %.0f MiB)",
+                saved.count, saved.interval, double(saved.bytes) / (1 << 20),
+                double(saved.budget) / (1 << 20));
+        else
+            ImGui::SetTooltip(
+                "Space: play/pause, arrows: step, Esc: cancel a seek\n"
+                "This culler's state cannot be saved: going back runs again from frame 0");
+    }
+    if (snapshot.seek_target >= 0) {
+        char label[64];
+        std::snprintf(label, sizeof label, "seeking to frame %d", snapshot.seek_target);
+        ImGui::ProgressBar(float(snapshot.seek_progress), ImVec2(-60, 0), label);
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) action.cancel_seek = true;
+    }
     return action;
 }
 

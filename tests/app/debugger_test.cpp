@@ -13,6 +13,7 @@
 #include "app/gl_api.h"
 #include "app/gl_context.h"
 #include "culling/io/scene_loader.h"
+#include "culling/registry/registry.h"
 #include "run_command.h"
 
 namespace gridcull {
@@ -138,6 +139,43 @@ TEST_F(DebuggerTest, RefusesAnAlgorithmThatDoesNotRunOnTheScene) {
     EXPECT_NE(error.find("lazy-grid runs on 3D scenes only, and this scene is 2D"),
               std::string::npos)
         << error;
+}
+
+// The knobs panel's Apply: the cullers are re-made with the knobs set and the
+// ones returned to auto, re-run to the current frame, and the cost recorded; a
+// value out of range is shown as an error and changes nothing.
+TEST_F(DebuggerTest, KnobsPanelAppliesKnobsAndRecordsTheirCost) {
+    options_.algo = "lazy-grid";
+    options_.knobs.set("lazy-res", 64);
+    Debugger debugger(options_);
+    std::string error;
+    ASSERT_TRUE(debugger.init(load("forest-3d.json"), error)) << error;
+    debugger.session().seek(5);
+    EXPECT_FALSE(debugger.snapshot().knob_cost.valid);
+
+    UiActions actions;
+    actions.knobs.apply = true;
+    actions.knobs.set = {{"lazy-cell-size", 8.0}, {"oracle-rays", 4096.0}};
+    actions.knobs.unset = {"lazy-res"};  // back to auto: the oracle's resolution
+    debugger.apply(actions);
+    const KnobValues& knobs = debugger.session().knobs();
+    EXPECT_EQ(knobs.get(*findKnob("lazy-cell-size")), 8.0);
+    EXPECT_FALSE(knobs.has("lazy-res"));
+    EXPECT_EQ(debugger.session().frame(), 5);
+    const FrameSnapshot shown = debugger.snapshot();
+    EXPECT_EQ(shown.knobs, &knobs);
+    ASSERT_TRUE(shown.knob_cost.valid);
+    EXPECT_EQ(shown.knob_cost.frames, 6);
+    EXPECT_GT(shown.knob_cost.pvs_ratio_after, 0.0);
+    EXPECT_TRUE(shown.scene_errors->empty());
+
+    actions.knobs.set = {{"oracle-res", 1.0}};  // below its range, 16 to 8192
+    actions.knobs.unset.clear();
+    debugger.apply(actions);
+    EXPECT_EQ(debugger.session().knobs().get(*findKnob("oracle-res")),
+              options_.knobs.get(*findKnob("oracle-res")));
+    ASSERT_FALSE(debugger.snapshot().scene_errors->empty());
+    EXPECT_NE(debugger.snapshot().scene_errors->front().find("oracle-res"), std::string::npos);
 }
 
 // The command line refuses the same combinations before any window opens.

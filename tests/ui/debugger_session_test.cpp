@@ -3,7 +3,9 @@
 // order gives; and the per-object states must name false culls.
 #include "ui/debugger_session.h"
 
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -100,10 +102,10 @@ TEST(DebuggerSession, StepsBackFromACheckpointAsIfRunInOrder) {
         const char* algo;
         const char* scene;
     };
-    for (const Case c : {Case{"rgvc", "default"}, Case{"rgvc", "scenes/hidden-movers-3d.json"},
-                         Case{"hzb-tbv", "scenes/hidden-movers-3d.json"},
-                         Case{"bsp-oq", "scenes/bunnies-3d.json"},
-                         Case{"lazy-grid", "scenes/forest-3d.json"}}) {
+    for (const Case c :
+         {Case{"rgvc", "default"}, Case{"rgvc", "scenes/hidden-movers-3d.json"},
+          Case{"hzb-tbv", "scenes/hidden-movers-3d.json"}, Case{"bsp-oq", "scenes/bunnies-3d.json"},
+          Case{"lazy-grid", "scenes/forest-3d.json"}}) {
         SCOPED_TRACE(std::string(c.algo) + " on " + c.scene);
         Scene scene = defaultScene();
         if (std::string(c.scene) != "default") {
@@ -152,6 +154,57 @@ TEST(DebuggerSession, StepsBackFromACheckpointAsIfRunInOrder) {
         EXPECT_EQ(session.result().pvs, pvs[kFrom]);
         EXPECT_LE(session.lastReplayedFrames(), kDefaultCheckpointInterval);
     }
+}
+
+// A long seek runs on a worker while the session still shows where it was; once
+// adopted it shows what running in order shows. A cancelled one leaves the
+// session where it was, and a short one runs at once.
+TEST(DebuggerSession, BackgroundSeeksAdoptOrCancelCleanly) {
+    SceneLoadResult loaded =
+        loadSceneFile(std::string(GRIDCULL_SOURCE_DIR) + "/scenes/hidden-movers-3d.json");
+    ASSERT_TRUE(loaded.scene);
+    const Scene& scene = *loaded.scene;
+    constexpr int kTarget = 60;
+    std::string error;
+    DebuggerSession in_order(fastOptions());
+    ASSERT_TRUE(in_order.open(scene, "", "hzb-tbv", error)) << error;
+    for (int f = 1; f <= kTarget; ++f) ASSERT_TRUE(in_order.step());
+
+    DebuggerSession session(fastOptions());
+    ASSERT_TRUE(session.open(scene, "", "hzb-tbv", error)) << error;
+    const std::vector<int> at0 = session.result().pvs;
+    session.seekInBackground(kTarget);
+    ASSERT_TRUE(session.seeking());
+    EXPECT_EQ(session.seekTarget(), kTarget);
+    EXPECT_EQ(session.frame(), 0);  // still showing frame 0
+    EXPECT_EQ(session.result().pvs, at0);
+    while (!session.pollSeek()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_FALSE(session.seeking());
+    EXPECT_EQ(session.frame(), kTarget);
+    EXPECT_EQ(session.lastReplayedFrames(), kTarget);
+    EXPECT_EQ(session.result().pvs, in_order.result().pvs);
+    EXPECT_EQ(session.exactResult().pvs, in_order.exactResult().pvs);
+    EXPECT_EQ(session.history().pvs_size[kTarget / 2], in_order.history().pvs_size[kTarget / 2]);
+    ASSERT_NE(session.debugSnapshot(), nullptr);
+    // The worker left its checkpoints: a step back replays a few frames.
+    session.seek(kTarget - 1);
+    EXPECT_LE(session.lastReplayedFrames(), kDefaultCheckpointInterval);
+
+    // Cancelled: still at kTarget - 1, and going on from there is unharmed.
+    const std::vector<int> before = session.result().pvs;
+    session.seekInBackground(scene.frames - 1);
+    session.cancelSeek();
+    EXPECT_FALSE(session.seeking());
+    EXPECT_FALSE(session.pollSeek());
+    EXPECT_EQ(session.frame(), kTarget - 1);
+    EXPECT_EQ(session.result().pvs, before);
+    ASSERT_TRUE(session.step());
+    EXPECT_EQ(session.result().pvs, in_order.result().pvs);
+
+    // Near a checkpoint: at once, no worker.
+    session.seekInBackground(kTarget - 3);
+    EXPECT_FALSE(session.seeking());
+    EXPECT_EQ(session.frame(), kTarget - 3);
 }
 
 TEST(ObjectStates, ComparesPvsWithTheOracle) {

@@ -30,6 +30,7 @@ inline FrameSnapshot snapshotOfSession(const DebuggerSession& session,
     snapshot.exact = &session.exactResult();
     snapshot.false_culled = &session.falseCulled();
     snapshot.history = &session.history();
+    snapshot.knobs = &session.knobs();
     snapshot.scene_file = &scene_file;
     snapshot.scene_errors = &scene_errors;
     return snapshot;
