@@ -40,6 +40,7 @@ struct WindowCommand {
     std::string scene, algo = defaultAlgorithm(), out, view = "main";
     long long frame = 0, width = 1280, height = 720, exit_after = 0;
     bool play = false;
+    double ui_scale = 1.0;
     KnobOptions knobs;
 };
 CLI::App* addShotCommand(CLI::App& app, WindowCommand& c);

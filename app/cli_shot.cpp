@@ -28,6 +28,11 @@ void addWindowOptions(CLI::App& cmd, WindowCommand& c) {
     cmd.add_option("--height", c.height, "window height in pixels, 64 to 8192 (default 720)")
         ->check(CLI::Range(64LL, 8192LL).description(""))
         ->type_name("N");
+    cmd.add_option("--ui-scale", c.ui_scale,
+                   "the panels' font and sizes, 0.5 to 4 (default 1; 2 for a 1080p projector); "
+                   "in the window Ctrl+plus and Ctrl+minus change it")
+        ->check(CLI::Range(kMinUiScale, kMaxUiScale).description(""))
+        ->type_name("S");
     c.knobs.addTo(cmd, true);
     cmd.footer(cullingHelpFooter(algorithmNames()));
 }
@@ -53,6 +58,7 @@ int prepare(const std::string& command, const WindowCommand& c, Scene& scene, Vi
     view.height = int(c.height);
     view.frame = int(c.frame);
     view.view = c.view;
+    view.ui_scale = c.ui_scale;
     return kExitOk;
 }
 

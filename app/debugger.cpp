@@ -136,6 +136,10 @@ void Debugger::stepBack() {
     session_.seek(session_.frame() - 1);
 }
 
+void Debugger::setUiScale(double scale) {
+    options_.ui_scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+}
+
 void Debugger::toggleFreeze() {
     session_.setCullingCameraFrozen(!session_.cullingCameraFrozen());
 }

@@ -43,6 +43,10 @@ public:
     // focus (a picked object, say), else the one under the mouse.
     int outlinedObject() const;
 
+    // The panels' scale; the window rebuilds its font when it changes.
+    double uiScale() const { return options_.ui_scale; }
+    void setUiScale(double scale);
+
     // Shots hide wall-clock times: they differ from run to run.
     void setShowTimings(bool show) { show_timings_ = show; }
 

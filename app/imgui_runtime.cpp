@@ -4,6 +4,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 ImGuiRuntime::~ImGuiRuntime() {
@@ -12,19 +14,39 @@ ImGuiRuntime::~ImGuiRuntime() {
     if (context_) ImGui::DestroyContext();
 }
 
-bool ImGuiRuntime::init(GLFWwindow* window, std::string& error) {
+void ImGuiRuntime::buildFontAndStyle(double ui_scale) {
+    scale_ = ui_scale;
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    ImFontConfig font;
+    font.SizePixels = float(kDesignFontPixels * ui_scale);
+    io.Fonts->AddFontDefault(&font);
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 0.0f;
+    style.FrameRounding = 2.0f;
+    style.WindowBorderSize = 1.0f;
+    style.ItemSpacing = ImVec2(6.0f, 4.0f);
+    style.ScaleAllSizes(float(ui_scale));
+    ImGui::GetStyle() = style;
+}
+
+void ImGuiRuntime::setScale(double ui_scale) {
+    buildFontAndStyle(ui_scale);
+    if (renderer_) {
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+}
+
+bool ImGuiRuntime::init(GLFWwindow* window, std::string& error, double ui_scale) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     context_ = true;
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.LogFilename = nullptr;
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.WindowRounding = 0.0f;
-    style.FrameRounding = 2.0f;
-    style.WindowBorderSize = 1.0f;
-    style.ItemSpacing = ImVec2(6.0f, 4.0f);
+    buildFontAndStyle(ui_scale);
     if (window) {
         if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
             error = "cannot start ImGui's GLFW backend";

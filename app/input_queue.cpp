@@ -13,19 +13,19 @@ void InputQueue::push(int key, bool down) {
 
 void InputQueue::apply(ImGuiIO& io) {
     applied_.clear();
-    size_t kept = 0;
-    for (const Event& event : events_) {
-        const bool valid = event.key >= 0 && event.key < int(IM_ARRAYSIZE(io.KeysDown));
-        const bool waits = std::find(applied_.begin(), applied_.end(), event.key) != applied_.end();
-        if (valid && waits) {
-            events_[kept++] = event;
-            continue;
-        }
-        if (!valid) continue;  // a key ImGui has no slot for
+    // In order, up to the first event of a key changed already this frame: it
+    // and every later event wait, so that no event overtakes an earlier one
+    // (a Ctrl release never comes before the key pressed with it).
+    size_t next = 0;
+    for (; next < events_.size(); ++next) {
+        const Event& event = events_[next];
+        if (event.key < 0 || event.key >= int(IM_ARRAYSIZE(io.KeysDown)))
+            continue;  // a key ImGui has no slot for
+        if (std::find(applied_.begin(), applied_.end(), event.key) != applied_.end()) break;
         io.KeysDown[event.key] = event.down;
         applied_.push_back(event.key);
     }
-    events_.resize(kept);
+    events_.erase(events_.begin(), events_.begin() + std::ptrdiff_t(next));
     const bool* down = io.KeysDown;
     io.KeyCtrl = down[GLFW_KEY_LEFT_CONTROL] || down[GLFW_KEY_RIGHT_CONTROL];
     io.KeyShift = down[GLFW_KEY_LEFT_SHIFT] || down[GLFW_KEY_RIGHT_SHIFT];

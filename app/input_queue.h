@@ -20,8 +20,10 @@ class InputQueue {
 public:
     // A press (down) or release of GLFW key code `key`.
     void push(int key, bool down);
-    // Before ImGui::NewFrame(): applies, for every key, its oldest waiting
-    // transition to io.KeysDown and the modifier flags; later ones wait.
+    // Before ImGui::NewFrame(): applies the waiting events in order to
+    // io.KeysDown and the modifier flags, up to the first one whose key already
+    // changed in this call; that one and all after it wait for the next frame,
+    // so events never overtake each other.
     void apply(ImGuiIO& io);
     bool empty() const { return events_.empty(); }
 

@@ -68,7 +68,7 @@ int runWindow(const Scene& scene, const ViewOptions& options) {
     glfwSwapInterval(1);
     ImGuiRuntime imgui;
     Debugger debugger(options);
-    if (!imgui.init(window.get(), error) || !debugger.init(scene, error)) {
+    if (!imgui.init(window.get(), error, options.ui_scale) || !debugger.init(scene, error)) {
         std::cerr << "gridcull: " << error << "\n";
         return 1;
     }
@@ -86,6 +86,7 @@ int runWindow(const Scene& scene, const ViewOptions& options) {
             glfwWaitEvents();  // minimised
             continue;
         }
+        if (debugger.uiScale() != imgui.scale()) imgui.setScale(debugger.uiScale());
         drawWindowFrame(debugger, window.get(), input, width, height, fb_width, fb_height);
         glfwSwapBuffers(window.get());
 
@@ -120,7 +121,7 @@ bool renderShot(const Scene& scene, const ViewOptions& options, const std::strin
     OffscreenTarget target;
     if (!target.create(width, height, error)) return false;
     ImGuiRuntime imgui;
-    if (panels && !imgui.init(nullptr, error)) return false;
+    if (panels && !imgui.init(nullptr, error, options.ui_scale)) return false;
     ViewOptions still = options;
     still.play = false;  // a shot is one frame: the panels show it paused
     Debugger debugger(still);
@@ -128,7 +129,7 @@ bool renderShot(const Scene& scene, const ViewOptions& options, const std::strin
     if (!debugger.init(scene, error)) return false;
     debugger.setViewMode(mode);
 
-    const WindowLayout layout = computeLayout(width, height, panels);
+    const WindowLayout layout = computeLayout(width, height, panels, options.ui_scale);
     if (panels) {
         // No clock, no pointer: the same frame always lays out the same.
         ImGuiIO& io = ImGui::GetIO();

@@ -10,6 +10,9 @@
 
 namespace gridcull {
 
+// The range of --ui-scale and of Ctrl+plus / Ctrl+minus.
+constexpr double kMinUiScale = 0.5, kMaxUiScale = 4.0;
+
 struct ViewOptions {
     std::string algo = defaultAlgorithm();  // the culler whose PVS colours the objects
     int width = 1280;                      // window / image size in pixels
@@ -18,6 +21,7 @@ struct ViewOptions {
     std::string view = "main";  // shot: which view to draw, see viewNames()
     KnobValues knobs;           // every culler the window makes is made with these
     KnobValues view_flags;      // the families' view flags (ui/registry/family_views.h)
+    double ui_scale = 1.0;      // panels' font and sizes (--ui-scale; Ctrl+plus/minus)
     bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
 };

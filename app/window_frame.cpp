@@ -19,7 +19,7 @@ void drawWindowFrame(Debugger& debugger, GLFWwindow* window, InputQueue& input, 
     ImGui_ImplGlfw_NewFrame();
     input.apply(ImGui::GetIO());
     ImGui::NewFrame();
-    const WindowLayout layout = computeLayout(width, height, true);
+    const WindowLayout layout = computeLayout(width, height, true, debugger.uiScale());
     handleWindowInput(debugger, window, layout);
     debugger.advancePlayback(ImGui::GetIO().DeltaTime);
     const UiActions actions = debugger.drawUi(layout);

@@ -7,6 +7,12 @@
 
 namespace gridcull {
 
+namespace {
+
+constexpr double kUiScaleStep = 1.2;
+
+}  // namespace
+
 void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayout& layout) {
     const ImGuiIO& io = ImGui::GetIO();
     const WindowRect& view = layout.scene_view;
@@ -40,6 +46,13 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) debugger.toggleFreeze();
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) debugger.cancelSeek();
+    // Ctrl+plus / Ctrl+minus (main keyboard or keypad): a fifth larger or smaller.
+    if (io.KeyCtrl) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_EQUAL) || ImGui::IsKeyPressed(GLFW_KEY_KP_ADD))
+            debugger.setUiScale(debugger.uiScale() * kUiScaleStep);
+        if (ImGui::IsKeyPressed(GLFW_KEY_MINUS) || ImGui::IsKeyPressed(GLFW_KEY_KP_SUBTRACT))
+            debugger.setUiScale(debugger.uiScale() / kUiScaleStep);
+    }
     if (dimensions3 && debugger.viewMode() == ViewMode::Fly) {
         auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0 : 0.0; };
         const glm::dvec3 move(down(GLFW_KEY_D) - down(GLFW_KEY_A),

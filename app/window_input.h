@@ -12,7 +12,7 @@ class Debugger;
 
 // Call once per frame after ImGui::NewFrame(). Keys: Space play/pause, Right /
 // Left step, Home first frame, F freeze the culling camera, Esc cancel a seek
-// running in the background; Fly view: WASD move,
+// running in the background, Ctrl+plus / Ctrl+minus scale the panels; Fly view: WASD move,
 // Q/E down/up, Shift faster. Mouse: right-drag orbits / looks / pans, the wheel
 // zooms, a left click picks (what it picks is the selected family's view's to say).
 void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayout& layout);

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
@@ -12,7 +14,7 @@ AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
     const char* current = snapshot.algo_index >= 0 && snapshot.algo_index < int(names.size())
                               ? names[size_t(snapshot.algo_index)].c_str()
                               : "?";
-    ImGui::SetNextItemWidth(-60);
+    ImGui::SetNextItemWidth(-scaledPixels(60));
     if (ImGui::BeginCombo("culler", current)) {
         for (int i = 0; i < int(names.size()); ++i) {
             const bool selected = i == snapshot.algo_index;

@@ -4,7 +4,7 @@
 
 namespace gridcull {
 
-WindowLayout computeLayout(int width, int height, bool with_panels) {
+WindowLayout computeLayout(int width, int height, bool with_panels, double ui_scale) {
     width = std::max(width, 1);
     height = std::max(height, 1);
     WindowLayout layout;
@@ -12,7 +12,7 @@ WindowLayout computeLayout(int width, int height, bool with_panels) {
         layout.scene_view = {0, 0, width, height};
         return layout;
     }
-    const int column = std::min(kPanelColumnWidth, width * 45 / 100);
+    const int column = std::min(int(kPanelColumnWidth * ui_scale), width * 45 / 100);
     layout.scene_view = {0, 0, std::max(width - column, 1), height};
     layout.panels = {width - column, 0, column, height};
     return layout;

@@ -19,11 +19,12 @@ struct WindowLayout {
     WindowRect panels;      // the column of panels; width 0 when there are none
 };
 
-// Panel column width in pixels at window widths >= 2x this; narrower windows give
-// the column at most 45% of the width.
+// Panel column width in pixels at UI scale 1, at window widths >= 2x this;
+// narrower windows give the column at most 45% of the width.
 constexpr int kPanelColumnWidth = 380;
 
 // with_panels == false: the scene view fills the window (shot --view scene).
-WindowLayout computeLayout(int width, int height, bool with_panels);
+// ui_scale: the panels' scale (--ui-scale), which widens the column with it.
+WindowLayout computeLayout(int width, int height, bool with_panels, double ui_scale = 1.0);
 
 }  // namespace gridcull

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 namespace {
@@ -9,7 +11,7 @@ namespace {
 void swatch(Rgb c, const char* name, const char* meaning) {
     const ImVec4 color(c.r, c.g, c.b, 1.0f);
     ImGui::ColorButton(name, color, ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
-                       ImVec2(13, 13));
+                       ImVec2(scaledPixels(13), scaledPixels(13)));
     ImGui::SameLine();
     ImGui::Text("%-12s %s", name, meaning);
 }

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 PlaybackAction drawPlaybackPanel(const FrameSnapshot& snapshot) {
@@ -12,7 +14,7 @@ PlaybackAction drawPlaybackPanel(const FrameSnapshot& snapshot) {
     if (!ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) return action;
     const int last = std::max(snapshot.scene->frames - 1, 0);
 
-    if (ImGui::Button(snapshot.playing ? "Pause" : "Play", ImVec2(60, 0)))
+    if (ImGui::Button(snapshot.playing ? "Pause" : "Play", ImVec2(scaledPixels(60), 0)))
         action.toggle_play = true;
     ImGui::SameLine();
     if (ImGui::Button("|<")) action.seek_frame = 0;
@@ -28,7 +30,7 @@ PlaybackAction drawPlaybackPanel(const FrameSnapshot& snapshot) {
     ImGui::Text("t = %.3f s", snapshot.t);
 
     int frame = snapshot.frame;
-    ImGui::SetNextItemWidth(-60);
+    ImGui::SetNextItemWidth(-scaledPixels(60));
     // Going backwards re-runs the cullers from their latest checkpoint: they
     // keep temporal state.
     if (ImGui::SliderInt("frame", &frame, 0, last)) action.seek_frame = frame;
@@ -49,7 +51,7 @@ PlaybackAction drawPlaybackPanel(const FrameSnapshot& snapshot) {
     if (snapshot.seek_target >= 0) {
         char label[64];
         std::snprintf(label, sizeof label, "seeking to frame %d", snapshot.seek_target);
-        ImGui::ProgressBar(float(snapshot.seek_progress), ImVec2(-60, 0), label);
+        ImGui::ProgressBar(float(snapshot.seek_progress), ImVec2(-scaledPixels(60), 0), label);
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) action.cancel_seek = true;
     }

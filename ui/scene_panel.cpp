@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state) {
@@ -24,7 +26,7 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
         ImGui::Text("2D, %zu objects, grid %dx%d", scene.objects.size(), r.x, r.y);
     ImGui::Text("%d frames, dt %.3f s", scene.frames, scene.dt);
 
-    ImGui::SetNextItemWidth(-60);
+    ImGui::SetNextItemWidth(-scaledPixels(60));
     const bool entered =
         ImGui::InputTextWithHint("##path", "path/to/scene.json", state.path, sizeof state.path,
                                  ImGuiInputTextFlags_EnterReturnsTrue);

@@ -5,11 +5,13 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 namespace {
 
-constexpr float kPlotHeight = 44.0f;
+constexpr float kPlotHeight = 44.0f;  // design pixels
 
 float seriesMax(const std::vector<float>& values, int count) {
     float m = 0.0f;
@@ -38,15 +40,17 @@ void hiddenRow(const char* name) {
     ImGui::TextDisabled("(not in shots)");
 }
 
-ImU32 toU32(Rgb c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)); }
+ImU32 toU32(Rgb c) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+}
 
 // Two series on one scale: PVS size over the exact visible count, so the gap
 // between the lines is the culler's over-estimation.
 void countsPlot(const FrameHistory& history, int count, int objects) {
-    const float top = std::max({seriesMax(history.pvs_size, count),
-                                seriesMax(history.exact_visible, count), 1.0f});
+    const float top = std::max(
+        {seriesMax(history.pvs_size, count), seriesMax(history.exact_visible, count), 1.0f});
     // ImGui 1.86's PlotLines takes no negative (fill) width: give it the space left.
-    const ImVec2 size(ImGui::GetContentRegionAvail().x, kPlotHeight);
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, scaledPixels(kPlotHeight));
     const ImVec2 at = ImGui::GetCursorPos();
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "PVS (blue) vs exact (white), of %d", objects);
@@ -56,8 +60,8 @@ void countsPlot(const FrameHistory& history, int count, int objects) {
     ImGui::SetCursorPos(at);
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
     ImGui::PushStyleColor(ImGuiCol_PlotLines, IM_COL32(235, 235, 235, 255));
-    ImGui::PlotLines("##exact", history.exact_visible.data(), count, 0, nullptr, 0.0f,
-                     top * 1.1f, size);
+    ImGui::PlotLines("##exact", history.exact_visible.data(), count, 0, nullptr, 0.0f, top * 1.1f,
+                     size);
     ImGui::PopStyleColor(2);
 }
 
@@ -98,7 +102,7 @@ void drawStatsPanel(const FrameSnapshot& snapshot, StatsPanelState& state) {
 
     static const char* const kSeriesNames[] = {"false culls", "cull ms", "draw ms"};
     int series = int(state.series);
-    ImGui::SetNextItemWidth(-60);
+    ImGui::SetNextItemWidth(-scaledPixels(60));
     if (ImGui::Combo("plot", &series, kSeriesNames, IM_ARRAYSIZE(kSeriesNames)))
         state.series = StatsSeries(series);
     const std::vector<float>* values = &history.false_culls;
@@ -114,7 +118,7 @@ void drawStatsPanel(const FrameSnapshot& snapshot, StatsPanelState& state) {
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "%s, max %.3g", kSeriesNames[series], double(largest));
     ImGui::PlotLines("##series", values->data(), count, 0, overlay, 0.0f, top * 1.1f,
-                     ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
+                     ImVec2(ImGui::GetContentRegionAvail().x, scaledPixels(kPlotHeight)));
 }
 
 }  // namespace gridcull

@@ -42,6 +42,9 @@ TEST(CliUsage, BadCommandLinesExitTwo) {
                                             "bench " + scene + " --algo rgvc --rgvc-validity nan",
                                             "bench " + scene + " --algo rgvc --rgvc-grid-res 0",
                                             "bench " + scene + " --algo rgvc --seek 0",
+                                            "shot " + scene + " --frame 1 --out x.png --ui-scale 0",
+                                            "shot " + scene + " --frame 1 --out x.png --ui-scale 9",
+                                            "view " + scene + " --ui-scale x",
                                             "bench " + scene + " --algo rgvc --seek 5,x",
                                             "bench " + scene + " --algo rgvc --seek 999999"};
     for (const std::string& args : cases) {

@@ -37,14 +37,31 @@ protected:
 };
 
 TEST_F(InputQueueTest, ATapWithinOneFrameIsSeenOnce) {
+    queue_.push(GLFW_KEY_SPACE, true);
     queue_.push(GLFW_KEY_LEFT, true);
     queue_.push(GLFW_KEY_LEFT, false);
-    queue_.push(GLFW_KEY_SPACE, true);
     EXPECT_TRUE(frame(GLFW_KEY_LEFT));
     EXPECT_TRUE(ImGui::GetIO().KeysDown[GLFW_KEY_SPACE]);  // another key, same frame
     EXPECT_FALSE(queue_.empty());                          // the release waits
     EXPECT_FALSE(frame(GLFW_KEY_LEFT));
     EXPECT_FALSE(ImGui::GetIO().KeysDown[GLFW_KEY_LEFT]);
+    EXPECT_TRUE(queue_.empty());
+}
+
+// Ctrl held around two taps of another key: its release waits behind them, so
+// both taps are seen with Ctrl down.
+TEST_F(InputQueueTest, EventsNeverOvertakeEachOther) {
+    queue_.push(GLFW_KEY_LEFT_CONTROL, true);
+    for (int i = 0; i < 2; ++i) {
+        queue_.push(GLFW_KEY_EQUAL, true);
+        queue_.push(GLFW_KEY_EQUAL, false);
+    }
+    queue_.push(GLFW_KEY_LEFT_CONTROL, false);
+    int with_ctrl = 0;
+    for (int i = 0; i < 8; ++i)
+        if (frame(GLFW_KEY_EQUAL) && ImGui::GetIO().KeyCtrl) ++with_ctrl;
+    EXPECT_EQ(with_ctrl, 2);
+    EXPECT_FALSE(ImGui::GetIO().KeyCtrl);
     EXPECT_TRUE(queue_.empty());
 }
 

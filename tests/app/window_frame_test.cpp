@@ -106,6 +106,15 @@ TEST_F(WindowFrameTest, KeyTapsStepForwardAndBackAndEscCancelsASeek) {
     frames(debugger, 2);
     EXPECT_FALSE(debugger.session().seeking());
     EXPECT_EQ(debugger.snapshot().frame, 120);
+
+    // Ctrl+plus twice, Ctrl+minus once: the panels a fifth larger, within range.
+    input_.push(GLFW_KEY_LEFT_CONTROL, true);
+    tap(GLFW_KEY_EQUAL, 2);
+    tap(GLFW_KEY_MINUS);
+    input_.push(GLFW_KEY_LEFT_CONTROL, false);
+    frames(debugger, 8);
+    EXPECT_NEAR(debugger.uiScale(), 1.2, 1e-9);
+    EXPECT_TRUE(input_.empty());
 }
 
 }  // namespace

@@ -31,6 +31,11 @@ TEST(WindowLayout, PanelColumnOnTheRight) {
     EXPECT_EQ(bare.scene_view.width, 640);
     EXPECT_TRUE(bare.scene_view.contains(639.5, 479.5));
     EXPECT_FALSE(bare.scene_view.contains(640.0, 10.0));
+    // --ui-scale 2 on a 1080p screen: a column twice as wide.
+    const WindowLayout projector = computeLayout(1920, 1080, true, 2.0);
+    EXPECT_EQ(projector.panels.width, 2 * kPanelColumnWidth);
+    EXPECT_EQ(projector.scene_view.width, 1920 - 2 * kPanelColumnWidth);
+    EXPECT_EQ(computeLayout(1280, 720, true, 4.0).panels.width, 1280 * 45 / 100);
 }
 
 class HeadlessImGui : public ::testing::Test {

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 namespace gridcull {
 
 namespace {
@@ -110,10 +112,10 @@ void historyRow(const BspNodeRecord& node) {
     ImGui::TextUnformatted(" ");
     for (int k = 0; marks[k]; ++k) {
         ImGui::PushID(k);
-        ImGui::SameLine(0.0f, 2.0f);
+        ImGui::SameLine(0.0f, scaledPixels(2.0f));
         const Rgb c = swatchColor(bspQuerySwatch(marks[k] == 'V'));
         ImGui::ColorButton(marks[k] == 'V' ? "visible" : "hidden", ImVec4(c.r, c.g, c.b, 1.0f),
-                           kSwatchFlags, ImVec2(8, 13));
+                           kSwatchFlags, ImVec2(scaledPixels(8), scaledPixels(13)));
         ImGui::PopID();
     }
     ImGui::Text("  %s", marks);

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 #include "ui/rgvc/rgvc_panel3d.h"
 #include "ui/rgvc/rgvc_voxel_panel.h"
 
@@ -26,7 +28,7 @@ bool layerToggle(RgvcLayer layer, RgvcViewState& view, int dimensions) {
     // 2D: O and H are veils, shown over the world's dark fill as drawn; 3D draws opaque.
     const float alpha = dimensions == 3 ? 1.0f : std::max(rgvcLayerAlpha(layer), 0.6f);
     ImGui::ColorButton(rgvcLayerName(layer), ImVec4(c.r, c.g, c.b, alpha), kSwatchFlags,
-                       ImVec2(13, 13));
+                       ImVec2(scaledPixels(13), scaledPixels(13)));
     ImGui::SameLine();
     const char* meaning = rgvcLayerMeaning(layer, dimensions);
     if (on)

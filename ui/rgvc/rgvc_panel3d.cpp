@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "ui/ui_units.h"
+
 #include "ui/rgvc/rgvc_slice.h"
 #include "ui/rgvc/rgvc_voxel_boxes.h"
 
@@ -19,7 +21,7 @@ void swatchRow(Swatch swatch, const char* meaning) {
     const Rgb c = swatchColor(swatch);
     ImGui::ColorButton(meaning, ImVec4(c.r, c.g, c.b, 1.0f),
                        ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
-                       ImVec2(13, 13));
+                       ImVec2(scaledPixels(13), scaledPixels(13)));
     ImGui::SameLine();
     ImGui::TextUnformatted(meaning);
 }
