@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/hover_pick.h"
 #include "culling/io/scene_loader.h"
@@ -35,6 +36,7 @@ bool Debugger::init(const Scene& scene, std::string& error) {
     view_camera_.frameScene(session_.scene());
     session_.seek(options_.frame);
     if (options_.play) togglePlay();
+    refreshSceneChoices();
     return true;
 }
 
@@ -136,6 +138,40 @@ void Debugger::stepBack() {
     session_.seek(session_.frame() - 1);
 }
 
+void Debugger::refreshSceneChoices() {
+    namespace fs = std::filesystem;
+    constexpr size_t kRecentScenes = 8;
+    const std::string& current = session_.sceneFile();
+    if (!current.empty()) {
+        recent_scenes_.erase(std::remove(recent_scenes_.begin(), recent_scenes_.end(), current),
+                             recent_scenes_.end());
+        recent_scenes_.insert(recent_scenes_.begin(), current);
+        if (recent_scenes_.size() > kRecentScenes) recent_scenes_.resize(kRecentScenes);
+    }
+    std::vector<std::string> found;
+    std::vector<fs::path> folders = {fs::path("scenes")};
+    if (!current.empty()) folders.insert(folders.begin(), fs::path(current).parent_path());
+    std::error_code error;
+    for (const fs::path& folder : folders) {
+        if (!fs::is_directory(folder, error)) continue;
+        for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+            if (entry.path().extension() == ".json" && entry.is_regular_file(error))
+                found.push_back(entry.path().string());
+        }
+    }
+    std::sort(found.begin(), found.end());
+    // The same file reached twice (beside the current one and in ./scenes) is listed once.
+    auto same = [&](const std::string& a, const std::string& b) {
+        return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error);
+    };
+    scene_choices_ = recent_scenes_;
+    for (const std::string& file : found) {
+        const bool listed = std::any_of(scene_choices_.begin(), scene_choices_.end(),
+                                        [&](const std::string& f) { return same(f, file); });
+        if (!listed) scene_choices_.push_back(file);
+    }
+}
+
 void Debugger::setUiScale(double scale) {
     options_.ui_scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
 }
@@ -169,6 +205,8 @@ FrameSnapshot Debugger::snapshot() const {
     s.culling_camera_frozen = session_.cullingCameraFrozen();
     s.scene_file = &session_.sceneFile();
     s.scene_errors = &scene_errors_;
+    s.scene_choices = &scene_choices_;
+    s.recent_scene_count = int(recent_scenes_.size());
     s.note = &note_;
     return s;
 }
@@ -214,6 +252,7 @@ void Debugger::openSceneFile(const std::string& path) {
         return;
     }
     scene_errors_.clear();
+    refreshSceneChoices();
     note_ = note;
     playing_ = false;
     hovered_index_ = -1;

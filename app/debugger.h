@@ -108,6 +108,11 @@ private:
     bool show_timings_ = true;
     double play_clock_ = 0.0;
     double last_draw_ms_ = 0.0;
+    // The scene picker's list: the files opened in this window, most recent
+    // first, then the scene files beside the current one and in ./scenes.
+    void refreshSceneChoices();
+    std::vector<std::string> recent_scenes_;
+    std::vector<std::string> scene_choices_;
     Checkpointing checkpointing_;
     KnobApplyCost knob_cost_;
     int hovered_index_ = -1;

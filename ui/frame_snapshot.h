@@ -84,7 +84,12 @@ struct FrameSnapshot {
     ViewMode view_mode = ViewMode::Overview;
     bool culling_camera_frozen = false;
 
-    const std::string* scene_file = nullptr;                 // "" for the built-in scene
+    const std::string* scene_file = nullptr;  // "" for the built-in scene
+    // Scene files to pick from: those opened in this window, most recent first
+    // (recent_scene_count of them), then the scene files found beside the
+    // current one and in ./scenes (may be null: no picker).
+    const std::vector<std::string>* scene_choices = nullptr;
+    int recent_scene_count = 0;
     const std::vector<std::string>* scene_errors = nullptr;  // of the last failed open
     // What the window did on its own that the user should know, e.g. that opening
     // a 2D scene switched the culler from a 3D-only one ("" for nothing).

@@ -8,6 +8,32 @@
 
 namespace gridcull {
 
+namespace {
+
+// A list button beside the path field; the file picked, or null.
+const std::string* pickScene(const FrameSnapshot& snapshot) {
+    const std::vector<std::string>& choices = *snapshot.scene_choices;
+    const std::string* picked = nullptr;
+    if (!ImGui::BeginCombo("##pick", nullptr,
+                           ImGuiComboFlags_NoPreview | ImGuiComboFlags_HeightLarge))
+        return nullptr;
+    if (choices.empty()) ImGui::TextDisabled("no scene files found");
+    for (size_t i = 0; i < choices.size(); ++i) {
+        if (i == 0 && snapshot.recent_scene_count > 0) ImGui::TextDisabled("opened recently");
+        if (int(i) == snapshot.recent_scene_count) ImGui::TextDisabled("scene files");
+        const std::string name = std::filesystem::path(choices[i]).filename().string();
+        ImGui::PushID(int(i));
+        if (ImGui::Selectable(name.c_str(), choices[i] == *snapshot.scene_file))
+            picked = &choices[i];
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choices[i].c_str());
+        ImGui::PopID();
+    }
+    ImGui::EndCombo();
+    return picked;
+}
+
+}  // namespace
+
 SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state) {
     SceneAction action;
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return action;
@@ -26,7 +52,7 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
         ImGui::Text("2D, %zu objects, grid %dx%d", scene.objects.size(), r.x, r.y);
     ImGui::Text("%d frames, dt %.3f s", scene.frames, scene.dt);
 
-    ImGui::SetNextItemWidth(-scaledPixels(60));
+    ImGui::SetNextItemWidth(-scaledPixels(80));
     const bool entered =
         ImGui::InputTextWithHint("##path", "path/to/scene.json", state.path, sizeof state.path,
                                  ImGuiInputTextFlags_EnterReturnsTrue);
@@ -34,6 +60,13 @@ SceneAction drawScenePanel(const FrameSnapshot& snapshot, ScenePanelState& state
     if ((ImGui::Button("Open") || entered) && state.path[0] != '\0') {
         action.open = true;
         action.path = state.path;
+    }
+    if (snapshot.scene_choices) {
+        ImGui::SameLine();
+        if (const std::string* picked = pickScene(snapshot)) {
+            action.open = true;
+            action.path = *picked;
+        }
     }
     const std::vector<std::string>& errors = *snapshot.scene_errors;
     if (!errors.empty()) {

@@ -1,4 +1,6 @@
-// The scene: what is loaded, and opening another scene file by typing its path.
+// The scene: what is loaded, and opening another scene file by typing its path
+// or picking it from a list (the files opened recently, the scenes beside the
+// current one and in ./scenes).
 // A file that fails to load leaves the current scene in place; its messages
 // (scene-format.md "Errors") are shown here.
 #pragma once

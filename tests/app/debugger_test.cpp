@@ -178,6 +178,39 @@ TEST_F(DebuggerTest, KnobsPanelAppliesKnobsAndRecordsTheirCost) {
     EXPECT_NE(debugger.snapshot().scene_errors->front().find("oracle-res"), std::string::npos);
 }
 
+// The scene picker lists the files opened, most recent first, then the other
+// scene files beside the current one, each once; picking one opens it.
+TEST_F(DebuggerTest, ScenePickerListsRecentFilesThenTheScenesBesideThem) {
+    Debugger debugger(options_);
+    std::string error;
+    ASSERT_TRUE(debugger.init(load("walls-2d.json"), error)) << error;
+    FrameSnapshot shown = debugger.snapshot();
+    ASSERT_NE(shown.scene_choices, nullptr);
+    EXPECT_EQ(shown.recent_scene_count, 1);
+    const std::vector<std::string> first = *shown.scene_choices;
+    ASSERT_GE(first.size(), 10u);  // scenes/ holds more than ten scene files
+    EXPECT_EQ(first.front(), test::sourcePath("scenes/walls-2d.json"));
+    auto count = [&](const std::vector<std::string>& list, const std::string& name) {
+        return std::count_if(list.begin(), list.end(), [&](const std::string& f) {
+            return f.size() >= name.size() &&
+                   f.compare(f.size() - name.size(), name.size(), name) == 0;
+        });
+    };
+    EXPECT_EQ(count(first, "/walls-2d.json"), 1);
+    EXPECT_EQ(count(first, "/default.json"), 1);
+
+    UiActions pick;
+    pick.scene.open = true;
+    pick.scene.path = test::sourcePath("scenes/rooms-2d.json");
+    debugger.apply(pick);
+    shown = debugger.snapshot();
+    EXPECT_EQ(*shown.scene_file, pick.scene.path);
+    EXPECT_EQ(shown.recent_scene_count, 2);
+    EXPECT_EQ((*shown.scene_choices)[0], pick.scene.path);
+    EXPECT_EQ((*shown.scene_choices)[1], test::sourcePath("scenes/walls-2d.json"));
+    EXPECT_EQ(shown.scene_choices->size(), first.size());
+}
+
 // The command line refuses the same combinations before any window opens.
 TEST(WindowCommands, RefuseAnAlgorithmOfTheOtherDimensionNamingIt) {
     const std::string flat = "'" + test::sourcePath("scenes/walls-2d.json") + "'";
