@@ -30,11 +30,13 @@ int dispatch(int argc, char** argv) {
     CullCommand cull;
     BenchCommand bench;
     WindowCommand shot, view;
+    RecordCommand record;
     KnobsCommand knobs, counters;
     CLI::App* cull_app = addCullCommand(app, cull);
     CLI::App* bench_app = addBenchCommand(app, bench);
     CLI::App* shot_app = addShotCommand(app, shot);
     CLI::App* view_app = addViewCommand(app, view);
+    CLI::App* record_app = addRecordCommand(app, record);
     CLI::App* knobs_app = addKnobsCommand(app, knobs);
     CLI::App* counters_app = addCountersCommand(app, counters);
     for (CLI::App* sub : app.get_subcommands({})) sub->formatter(helpFormatter());
@@ -63,6 +65,7 @@ int dispatch(int argc, char** argv) {
     if (bench_app->parsed()) return runBench(bench);
     if (shot_app->parsed()) return runShot(shot);
     if (view_app->parsed()) return runView(view);
+    if (record_app->parsed()) return runRecord(record);
     if (knobs_app->parsed()) return runKnobs(knobs);
     if (counters_app->parsed()) return runCounters(counters);
     ViewOptions options;

@@ -14,35 +14,13 @@
 #include "app/cli.h"
 #include "app/cli_commands.h"
 #include "app/output_file.h"
+#include "app/progress_bar.h"
 #include "culling/registry/registry.h"
 #include "culling/scene/object_triangles.h"
 
 namespace gridcull {
 
 namespace {
-
-class ProgressBar {
-public:
-    explicit ProgressBar(long long total) : total_(total), enabled_(::isatty(2) != 0) {}
-    void step() {
-        ++done_;
-        if (!enabled_) return;
-        const int percent = int(done_ * 100 / total_);
-        if (percent == last_percent_) return;
-        last_percent_ = percent;
-        const int width = 40, filled = percent * width / 100;
-        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled,
-                     "########################################", width - filled, "", percent);
-        if (done_ == total_) std::fputs("\n", stderr);
-        std::fflush(stderr);
-    }
-
-private:
-    long long total_;
-    long long done_ = 0;
-    int last_percent_ = -1;
-    bool enabled_;
-};
 
 int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
     // Both sorted: ids in exact that pvs lacks.
@@ -100,8 +78,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
     cmd->add_option("--runs", c.runs, "repetitions, 1 to 1000 (default 5)")
         ->check(CLI::Range(1LL, 1000LL).description(""))
         ->type_name("N");
-    c.csv_option = cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
-        ->type_name("FILE");
+    c.csv_option =
+        cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
+            ->type_name("FILE");
     cmd->add_flag("--no-quality", c.no_quality, "skip the exact oracle (pvs only, faster)");
     cmd->add_option("--seek", c.seek,
                     "time the window's seeks instead: a step forward into each frame F\n"

@@ -43,10 +43,23 @@ struct WindowCommand {
     double ui_scale = 1.0;
     KnobOptions knobs;
 };
+// The options shot, view and record share (SCENE, --algo, sizes, knobs), and
+// their checks: kExitOk when the window may open, `scene` loaded and `view` set.
+void addWindowOptions(CLI::App& cmd, WindowCommand& c);
+int prepareWindowCommand(const std::string& command, const WindowCommand& c, Scene& scene,
+                         ViewOptions& view);
 CLI::App* addShotCommand(CLI::App& app, WindowCommand& c);
 int runShot(const WindowCommand& c);
 CLI::App* addViewCommand(CLI::App& app, WindowCommand& c);
 int runView(const WindowCommand& c);
+
+struct RecordCommand {
+    WindowCommand window;  // its frame is --from
+    long long from = 0, to = -1;
+    std::string out;
+};
+CLI::App* addRecordCommand(CLI::App& app, RecordCommand& c);
+int runRecord(const RecordCommand& c);
 
 struct KnobsCommand {
     bool markdown = false;

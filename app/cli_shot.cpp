@@ -10,8 +10,6 @@
 
 namespace gridcull {
 
-namespace {
-
 void addWindowOptions(CLI::App& cmd, WindowCommand& c) {
     cmd.add_option("SCENE", c.scene, "the scene file")->required()->type_name("");
     cmd.add_option("--algo", c.algo,
@@ -37,8 +35,8 @@ void addWindowOptions(CLI::App& cmd, WindowCommand& c) {
     cmd.footer(cullingHelpFooter(algorithmNames()));
 }
 
-// The checks shot and view share; kExitOk when the window may open.
-int prepare(const std::string& command, const WindowCommand& c, Scene& scene, ViewOptions& view) {
+int prepareWindowCommand(const std::string& command, const WindowCommand& c, Scene& scene,
+                         ViewOptions& view) {
     std::string error;
     std::vector<std::string> names;
     if (!splitAlgorithms(c.algo, names, error, algorithmNames())) return usageError(command, error);
@@ -62,8 +60,6 @@ int prepare(const std::string& command, const WindowCommand& c, Scene& scene, Vi
     return kExitOk;
 }
 
-}  // namespace
-
 CLI::App* addShotCommand(CLI::App& app, WindowCommand& c) {
     CLI::App* cmd = app.add_subcommand(
         "shot",
@@ -85,7 +81,8 @@ CLI::App* addShotCommand(CLI::App& app, WindowCommand& c) {
 int runShot(const WindowCommand& c) {
     Scene scene;
     ViewOptions view;
-    if (const int status = prepare("shot", c, scene, view); status != kExitOk) return status;
+    if (const int status = prepareWindowCommand("shot", c, scene, view); status != kExitOk)
+        return status;
     std::string error;
     if (!renderShot(scene, view, c.out, error)) {
         std::cerr << "gridcull shot: " << error << "\n";
@@ -114,7 +111,8 @@ CLI::App* addViewCommand(CLI::App& app, WindowCommand& c) {
 int runView(const WindowCommand& c) {
     Scene scene;
     ViewOptions view;
-    if (const int status = prepare("view", c, scene, view); status != kExitOk) return status;
+    if (const int status = prepareWindowCommand("view", c, scene, view); status != kExitOk)
+        return status;
     view.play = c.play;
     view.exit_after_frames = int(c.exit_after);
     return runWindow(scene, view);

@@ -11,7 +11,7 @@ TEST(CliUsage, VersionAndHelpExitZero) {
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.out.find("gridcull "), std::string::npos);
     for (const char* cmd :
-         {"--help", "cull --help", "bench --help", "shot --help", "view --help"}) {
+         {"--help", "cull --help", "bench --help", "shot --help", "view --help", "record --help"}) {
         r = runGridcull(cmd);
         EXPECT_EQ(r.status, 0) << cmd;
         EXPECT_NE(r.out.find("usage"), std::string::npos) << cmd;
