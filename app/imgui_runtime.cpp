@@ -27,6 +27,9 @@ void ImGuiRuntime::buildFontAndStyle(double ui_scale) {
     style.FrameRounding = 2.0f;
     style.WindowBorderSize = 1.0f;
     style.ItemSpacing = ImVec2(6.0f, 4.0f);
+    // Popups and tooltips opaque: the scene behind them must not show through
+    // their text.
+    style.Colors[ImGuiCol_PopupBg].w = 1.0f;
     style.ScaleAllSizes(float(ui_scale));
     ImGui::GetStyle() = style;
 }

@@ -36,6 +36,7 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const Wi
         drawLegendPanel(snapshot);
     }
     ImGui::End();
+    drawHoverTooltip(snapshot);
     return actions;
 }
 

@@ -4,13 +4,10 @@
 
 namespace gridcull {
 
-void drawHoverPanel(const FrameSnapshot& snapshot) {
-    if (!ImGui::CollapsingHeader("Under the mouse", ImGuiTreeNodeFlags_DefaultOpen)) return;
+namespace {
+
+void drawDetails(const FrameSnapshot& snapshot) {
     const HoverInfo& hover = snapshot.hover;
-    if (hover.id < 0) {
-        ImGui::TextDisabled("nothing: point at an object in the view");
-        return;
-    }
     const int dims = snapshot.scene->dimensions;
     const Rgb c = objectStateColor(hover.state);
     ImGui::Text("object %d, %s,", hover.id, shapeName(hover.shape, dims));
@@ -28,6 +25,24 @@ void drawHoverPanel(const FrameSnapshot& snapshot) {
                     hover.bounds.min.y, hover.bounds.max.x, hover.bounds.max.y);
         ImGui::Text("%s, max speed %.2f", motionName(hover.motion), hover.max_speed);
     }
+}
+
+}  // namespace
+
+void drawHoverPanel(const FrameSnapshot& snapshot) {
+    if (!ImGui::CollapsingHeader("Under the mouse", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (snapshot.hover.id < 0) {
+        ImGui::TextDisabled("nothing: point at an object in the view");
+        return;
+    }
+    drawDetails(snapshot);
+}
+
+void drawHoverTooltip(const FrameSnapshot& snapshot) {
+    if (snapshot.hover.id < 0) return;
+    ImGui::BeginTooltip();
+    drawDetails(snapshot);
+    ImGui::EndTooltip();
 }
 
 }  // namespace gridcull

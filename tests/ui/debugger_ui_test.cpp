@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
@@ -87,6 +88,17 @@ TEST_F(HeadlessImGui, PanelsAskForNothingWithoutInput) {
     const ImDrawData* draw = ImGui::GetDrawData();
     ASSERT_NE(draw, nullptr);
     EXPECT_GT(draw->TotalVtxCount, 1000);  // the panels and the legend drew
+    // The object under the mouse is described by the cursor too.
+    const ImGuiWindow* tooltip = ImGui::FindWindowByName("##Tooltip_00");
+    ASSERT_NE(tooltip, nullptr);
+    EXPECT_TRUE(tooltip->Active);
+
+    // Nothing under the mouse: no tooltip.
+    snapshot.hover.id = -1;
+    ImGui::NewFrame();
+    drawDebuggerUi(snapshot, state, layout);
+    ImGui::Render();
+    EXPECT_FALSE(ImGui::FindWindowByName("##Tooltip_00")->Active);
 }
 
 }  // namespace
