@@ -27,6 +27,7 @@ int indexOfName(const std::vector<std::string>& names, const std::string& name) 
 
 bool Debugger::init(const Scene& scene, std::string& error) {
     if (!renderer_.init(error)) return false;
+    session_.setComputeAhead(options_.compute_ahead);
     if (!session_.open(scene, scene.source_path, options_.algo, error)) return false;
     if (!checkViewFlags(options_.view_flags, session_.scene(), error)) return false;
     flags_scene_generation_ = session_.sceneGeneration();
@@ -197,6 +198,8 @@ FrameSnapshot Debugger::snapshot() const {
     s.exact = &session_.exactResult();
     s.false_culled = &session_.falseCulled();
     s.history = &session_.history();
+    s.timeline = ahead_frames_ > 0 ? &ahead_ : nullptr;
+    s.timeline_frames = ahead_frames_;
     s.hover = describeObject(session_.scene(), hovered_index_, session_.t(), session_.states(),
                              hovered_distance_);
     s.draw_ms = last_draw_ms_;
@@ -213,6 +216,7 @@ FrameSnapshot Debugger::snapshot() const {
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
     noteCheckpoints();
+    ahead_frames_ = session_.computedAhead(ahead_);
     return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_, familyContext());
 }
 
@@ -278,6 +282,10 @@ void Debugger::apply(const UiActions& actions) {
     if (playback.toggle_play) togglePlay();
     if (playback.step) stepForward();
     if (playback.cancel_seek) session_.cancelSeek();
+    if (actions.timeline.seek_frame >= 0) {
+        playing_ = false;
+        session_.seekInBackground(actions.timeline.seek_frame);
+    }
     if (playback.seek_frame >= 0) {
         playing_ = false;
         session_.seekInBackground(playback.seek_frame);

@@ -115,6 +115,8 @@ private:
     std::vector<std::string> scene_choices_;
     Checkpointing checkpointing_;
     KnobApplyCost knob_cost_;
+    FrameHistory ahead_;  // the run computed ahead, copied each frame for the timeline
+    int ahead_frames_ = 0;
     int hovered_index_ = -1;
     double hovered_distance_ = 0.0;
     // One view per family shown so far, by family id, and the selected

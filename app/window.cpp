@@ -41,7 +41,9 @@ const char* viewNamesHelp() {
            "through the culling camera); default main";
 }
 
-int runWindow(const Scene& scene, const ViewOptions& options) {
+int runWindow(const Scene& scene, const ViewOptions& window_options) {
+    ViewOptions options = window_options;
+    options.compute_ahead = true;  // the window's timeline shows the whole run
     std::string error;
     GlWindow window;
     const std::string title = "gridcull: " + scene.name;

@@ -22,6 +22,7 @@ struct ViewOptions {
     KnobValues knobs;           // every culler the window makes is made with these
     KnobValues view_flags;      // the families' view flags (ui/registry/family_views.h)
     double ui_scale = 1.0;      // panels' font and sizes (--ui-scale; Ctrl+plus/minus)
+    bool compute_ahead = false;  // the timeline computed ahead in the background (window)
     bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
 };

@@ -13,7 +13,7 @@ Camera RunContext::cameraOfFrame(int frame) const {
 
 void runFrame(CullingRun& run, const RunContext& context, int frame, bool full) {
     const Scene& scene = *context.scene;
-    context.checkpoints->offer(frame, *run.culler);
+    if (context.checkpoints) context.checkpoints->offer(frame, *run.culler);
     run.frame = frame;
     ++run.replayed;
     const double t = scene.timeOfFrame(frame);
@@ -31,6 +31,7 @@ void runFrame(CullingRun& run, const RunContext& context, int frame, bool full) 
     history.exact_visible[slot] = float(exact.pvs.size());
     history.false_culls[slot] = float(run.false_culled.size());
     history.cull_ms[slot] = float(run.result.stats.cull_ms);
+    history.stats[slot] = run.result.stats;
     history.draw_ms[slot] = 0.0f;
 }
 

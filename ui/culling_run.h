@@ -35,7 +35,7 @@ struct CullingRun {
 // frozen_from on (when >= 0) is culled from frozen_camera.
 struct RunContext {
     const Scene* scene = nullptr;
-    CullerCheckpoints* checkpoints = nullptr;
+    CullerCheckpoints* checkpoints = nullptr;  // null: none offered
     FrameHistory* history = nullptr;
     int frozen_from = -1;
     Camera frozen_camera;

@@ -33,6 +33,7 @@ bool DebuggerSession::open(Scene scene, const std::string& source_file, const st
     cancelSeek();
     std::unique_ptr<Culler> culler, exact;
     if (!makeCullers(scene, algo, knobs_, culler, exact, error)) return false;
+    timeline_.stop();  // it reads the scene about to be replaced
     scene_ = std::make_unique<Scene>(std::move(scene));
     scene_file_ = source_file;
     ++scene_generation_;
@@ -44,6 +45,7 @@ bool DebuggerSession::open(Scene scene, const std::string& source_file, const st
     frozen_from_ = -1;
     history_.resize(std::max(scene_->frames, 1));
     restart();
+    restartTimeline();
     return true;
 }
 
@@ -69,6 +71,7 @@ bool DebuggerSession::replaceCullers(const std::string& algo, const KnobValues& 
     const int target = live_.frame;
     restart();
     seek(target);
+    restartTimeline();
     return true;
 }
 
@@ -172,6 +175,7 @@ void DebuggerSession::setCullingCameraFrozen(bool frozen) {
         frozen_from_ = live_.frame + 1;
         checkpoints_.dropAfter(frozen_from_);  // later ones saw the moving camera
         live_.known_until = std::min(live_.known_until, live_.frame);
+        restartTimeline();
         return;
     }
     checkpoints_.dropAfter(frozen_from_);  // later ones saw the frozen camera
@@ -179,6 +183,27 @@ void DebuggerSession::setCullingCameraFrozen(bool frozen) {
     const int target = live_.frame;
     restart();
     seek(target);
+    restartTimeline();
+}
+
+void DebuggerSession::setComputeAhead(bool on) {
+    compute_ahead_ = on;
+    if (on && isOpen()) restartTimeline();
+    if (!on) timeline_.stop();
+}
+
+void DebuggerSession::restartTimeline() {
+    timeline_.stop();
+    if (!compute_ahead_) return;
+    // The state before frame 0 is the first checkpoint (none: the culler
+    // cannot be copied, and the timeline shows the frames run only).
+    const CullerCheckpoint* start = checkpoints_.latestAtOrBefore(0);
+    if (!start) return;
+    std::unique_ptr<Culler> culler = start->culler->clone();
+    std::unique_ptr<Culler> exact = live_.exact ? live_.exact->clone() : nullptr;
+    if (!culler || (live_.exact && !exact)) return;
+    culler->setDebugCapture(false);  // numbers only
+    timeline_.start(*scene_, std::move(culler), std::move(exact), frozen_from_, frozen_camera_);
 }
 
 void DebuggerSession::recordDrawMs(double ms) {

@@ -30,6 +30,7 @@
 #include "ui/culling_run.h"
 #include "ui/frame_snapshot.h"
 #include "ui/object_state.h"
+#include "ui/timeline_run.h"
 
 namespace gridcull {
 
@@ -69,6 +70,13 @@ public:
     double seekProgress() const { return seek_job_.progress(); }
     // Stops a background seek; the session stays where it was.
     void cancelSeek();
+
+    // On: whenever the cullers, knobs or culling camera change, the whole run
+    // is computed again ahead on a worker (ui/timeline_run.h) for the timeline
+    // (the window; off in shots and tests, whose timeline shows the frames run).
+    void setComputeAhead(bool on);
+    // Copies the frames computed ahead so far into `history`; returns how many.
+    int computedAhead(FrameHistory& history) const { return timeline_.copyTo(history); }
     // Adopts a finished background seek; true when it did (the frame changed).
     bool pollSeek();
     // One frame forward; false (and nothing done) at the last frame.
@@ -119,6 +127,8 @@ private:
     // a checkpoint's, the checkpoint (null: go on from the current frame, or
     // restart when first is 0 and frame() is not before it).
     const CullerCheckpoint* seekStart(int frame, int& first) const;
+    // Starts computing the run ahead (when asked to and the culler can be copied).
+    void restartTimeline();
 
     KnobValues knobs_;
     std::unique_ptr<Scene> scene_;
@@ -130,7 +140,10 @@ private:
     Camera frozen_camera_;
     FrameHistory history_;
     CullerCheckpoints checkpoints_;
-    BackgroundSeek seek_job_;  // declared last: stopped before what it uses goes
+    bool compute_ahead_ = false;
+    // Declared last: stopped before what they use goes.
+    BackgroundSeek seek_job_;
+    TimelineRun timeline_;
 };
 
 }  // namespace gridcull

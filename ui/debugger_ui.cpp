@@ -31,11 +31,12 @@ UiActions drawDebuggerUi(const FrameSnapshot& snapshot, UiState& state, const Wi
         // The family's own panel right under the culler that fills it.
         if (family) family->drawPanel(family_context, actions.family);
         actions.knobs = drawKnobsPanel(snapshot, state.knobs);
-        drawStatsPanel(snapshot, state.stats);
+        drawStatsPanel(snapshot);
         drawHoverPanel(snapshot);
         drawLegendPanel(snapshot);
     }
     ImGui::End();
+    actions.timeline = drawTimeline(snapshot, state.timeline, layout.timeline);
     drawHoverTooltip(snapshot);
     return actions;
 }

@@ -11,14 +11,15 @@
 #include "ui/playback_panel.h"
 #include "ui/scene_panel.h"
 #include "ui/stats_panel.h"
+#include "ui/timeline_panel.h"
 
 namespace gridcull {
 
 // Panel state that belongs to the UI alone (text being typed, plot choice).
 struct UiState {
-    StatsPanelState stats;
     ScenePanelState scene;
     KnobsPanelState knobs;
+    TimelineState timeline;
 };
 
 struct UiActions {
@@ -27,6 +28,7 @@ struct UiActions {
     SceneAction scene;
     FamilyAction family;
     KnobsAction knobs;
+    TimelineAction timeline;
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the

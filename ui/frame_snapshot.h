@@ -20,11 +20,14 @@ struct FrameHistory {
     std::vector<float> pvs_size;
     std::vector<float> exact_visible;
     std::vector<float> false_culls;
-    std::vector<float> cull_ms;  // the selected culler's, wall clock
-    std::vector<float> draw_ms;  // 0 for frames that were never drawn
+    std::vector<float> cull_ms;    // the selected culler's, wall clock
+    std::vector<float> draw_ms;    // 0 for frames that were never drawn
+    std::vector<CullStats> stats;  // the selected culler's counters
 
     // Sizes every series to `frames` slots of 0 (allocates only when it grows).
     void resize(int frames);
+    // Copies slot `frame` of every series from `from` (the same size).
+    void copyFrame(const FrameHistory& from, int frame);
 };
 
 // The object under the mouse in the 3D / 2D view.
@@ -73,7 +76,10 @@ struct FrameSnapshot {
     const FrameResult* result = nullptr;             // the selected culler at `frame`
     const FrameResult* exact = nullptr;              // the oracle at `frame`
     const std::vector<int>* false_culled = nullptr;  // ids, ascending
-    const FrameHistory* history = nullptr;
+    const FrameHistory* history = nullptr;           // frames 0..frame (and more, once visited)
+    // The run computed ahead (frames 0..timeline_frames-1; null: none).
+    const FrameHistory* timeline = nullptr;
+    int timeline_frames = 0;
     const KnobValues* knobs = nullptr;  // the values the cullers were made with
     KnobApplyCost knob_cost;
 

@@ -13,7 +13,9 @@ WindowLayout computeLayout(int width, int height, bool with_panels, double ui_sc
         return layout;
     }
     const int column = std::min(int(kPanelColumnWidth * ui_scale), width * 45 / 100);
-    layout.scene_view = {0, 0, std::max(width - column, 1), height};
+    const int strip = std::min(int(kTimelineHeight * ui_scale), height * 30 / 100);
+    layout.scene_view = {0, 0, std::max(width - column, 1), std::max(height - strip, 1)};
+    layout.timeline = {0, height - strip, layout.scene_view.width, strip};
     layout.panels = {width - column, 0, column, height};
     return layout;
 }

@@ -17,11 +17,14 @@ struct WindowRect {
 struct WindowLayout {
     WindowRect scene_view;  // the 3D / 2D view
     WindowRect panels;      // the column of panels; width 0 when there are none
+    WindowRect timeline;    // under the view, as wide; height 0 without panels
 };
 
 // Panel column width in pixels at UI scale 1, at window widths >= 2x this;
 // narrower windows give the column at most 45% of the width.
 constexpr int kPanelColumnWidth = 380;
+// Timeline height in pixels at UI scale 1, at most 30% of the window's height.
+constexpr int kTimelineHeight = 116;
 
 // with_panels == false: the scene view fills the window (shot --view scene).
 // ui_scale: the panels' scale (--ui-scale), which widens the column with it.

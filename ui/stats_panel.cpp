@@ -5,19 +5,9 @@
 
 #include <imgui.h>
 
-#include "ui/ui_units.h"
-
 namespace gridcull {
 
 namespace {
-
-constexpr float kPlotHeight = 44.0f;  // design pixels
-
-float seriesMax(const std::vector<float>& values, int count) {
-    float m = 0.0f;
-    for (int i = 0; i < count; ++i) m = std::max(m, values[size_t(i)]);
-    return m;
-}
 
 // `tooltip`, when given, shows over the name: what the row counts.
 void row(const char* name, const char* format, double value, ImU32 color = 0,
@@ -44,36 +34,14 @@ ImU32 toU32(Rgb c) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
 }
 
-// Two series on one scale: PVS size over the exact visible count, so the gap
-// between the lines is the culler's over-estimation.
-void countsPlot(const FrameHistory& history, int count, int objects) {
-    const float top = std::max(
-        {seriesMax(history.pvs_size, count), seriesMax(history.exact_visible, count), 1.0f});
-    // ImGui 1.86's PlotLines takes no negative (fill) width: give it the space left.
-    const ImVec2 size(ImGui::GetContentRegionAvail().x, scaledPixels(kPlotHeight));
-    const ImVec2 at = ImGui::GetCursorPos();
-    char overlay[96];
-    std::snprintf(overlay, sizeof overlay, "PVS (blue) vs exact (white), of %d", objects);
-    ImGui::PushStyleColor(ImGuiCol_PlotLines, toU32(objectStateColor(ObjectState::Hidden)));
-    ImGui::PlotLines("##pvs", history.pvs_size.data(), count, 0, overlay, 0.0f, top * 1.1f, size);
-    ImGui::PopStyleColor();
-    ImGui::SetCursorPos(at);
-    ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
-    ImGui::PushStyleColor(ImGuiCol_PlotLines, IM_COL32(235, 235, 235, 255));
-    ImGui::PlotLines("##exact", history.exact_visible.data(), count, 0, nullptr, 0.0f, top * 1.1f,
-                     size);
-    ImGui::PopStyleColor(2);
-}
-
 }  // namespace
 
-void drawStatsPanel(const FrameSnapshot& snapshot, StatsPanelState& state) {
+void drawStatsPanel(const FrameSnapshot& snapshot) {
     if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const FrameResult& result = *snapshot.result;
     const int pvs = int(result.pvs.size());
     const int exact = int(snapshot.exact->pvs.size());
     const int false_culls = int(snapshot.false_culled->size());
-    const int objects = int(snapshot.scene->objects.size());
 
     if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) {
         row("PVS size", "%.0f", pvs);
@@ -94,31 +62,6 @@ void drawStatsPanel(const FrameSnapshot& snapshot, StatsPanelState& state) {
         }
         ImGui::EndTable();
     }
-
-    const FrameHistory& history = *snapshot.history;
-    const int count = std::min(snapshot.frame + 1, int(history.pvs_size.size()));
-    if (count <= 0) return;
-    countsPlot(history, count, objects);
-
-    static const char* const kSeriesNames[] = {"false culls", "cull ms", "draw ms"};
-    int series = int(state.series);
-    ImGui::SetNextItemWidth(-scaledPixels(60));
-    if (ImGui::Combo("plot", &series, kSeriesNames, IM_ARRAYSIZE(kSeriesNames)))
-        state.series = StatsSeries(series);
-    const std::vector<float>* values = &history.false_culls;
-    if (state.series == StatsSeries::CullMs) values = &history.cull_ms;
-    if (state.series == StatsSeries::DrawMs) values = &history.draw_ms;
-    const bool timing = state.series != StatsSeries::FalseCulls;
-    if (timing && !snapshot.show_timings) {
-        ImGui::TextDisabled("(times are not drawn in shots)");
-        return;
-    }
-    const float largest = seriesMax(*values, count);
-    const float top = std::max(largest, timing ? 0.001f : 1.0f);
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%s, max %.3g", kSeriesNames[series], double(largest));
-    ImGui::PlotLines("##series", values->data(), count, 0, overlay, 0.0f, top * 1.1f,
-                     ImVec2(ImGui::GetContentRegionAvail().x, scaledPixels(kPlotHeight)));
 }
 
 }  // namespace gridcull

@@ -23,7 +23,9 @@ TEST(WindowLayout, PanelColumnOnTheRight) {
     EXPECT_EQ(wide.panels.x + wide.panels.width, 1280);
     EXPECT_EQ(wide.scene_view.x, 0);
     EXPECT_EQ(wide.scene_view.width, 1280 - kPanelColumnWidth);
-    EXPECT_EQ(wide.scene_view.height, 720);
+    EXPECT_EQ(wide.scene_view.height, 720 - kTimelineHeight);
+    EXPECT_EQ(wide.timeline.y, 720 - kTimelineHeight);
+    EXPECT_EQ(wide.timeline.width, wide.scene_view.width);
     const WindowLayout narrow = computeLayout(400, 300, true);
     EXPECT_EQ(narrow.panels.width, 400 * 45 / 100);
     EXPECT_EQ(narrow.scene_view.width + narrow.panels.width, 400);
