@@ -221,7 +221,6 @@ UiActions Debugger::drawUi(const WindowLayout& layout) {
 }
 
 void Debugger::noteCheckpoints() {
-    if (session_.seeking()) return;
     const CullerCheckpoints& saved = session_.checkpoints();
     checkpointing_.count = saved.count();
     checkpointing_.interval = saved.interval();

@@ -80,8 +80,7 @@ public:
     FrameSnapshot snapshot() const;
 
 private:
-    // Copies the session's checkpoint figures for the panels (not read while a
-    // background seek is using the checkpoints).
+    // Copies the session's checkpoint figures for the panels.
     void noteCheckpoints();
     // Re-makes the cullers with knobs set and unset (checked as the command
     // line checks them) and records what the re-run cost for the knobs panel.

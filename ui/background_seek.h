@@ -1,8 +1,7 @@
 // A seek run on a worker thread, so that the window stays responsive (and can
 // cancel) while a long one culls its frames. The worker owns copies: the
-// cullers (Culler::clone), the frame's results and a copy of the history; the
-// checkpoints are lent to it, and their owner must not touch them until the
-// job is finished or cancelled. Nothing else is shared but the const scene.
+// cullers (Culler::clone), the frame's results and a copy of the history; it
+// shares the const scene and the checkpoints, which are thread-safe.
 #pragma once
 #include <atomic>
 #include <thread>

@@ -63,6 +63,7 @@ bool DebuggerSession::replaceCullers(const std::string& algo, const KnobValues& 
     cancelSeek();
     std::unique_ptr<Culler> culler, exact;
     if (!makeCullers(*scene_, algo, knobs, culler, exact, error)) return false;
+    timeline_.stop();  // it offers checkpoints of the cullers being replaced
     algo_ = algo;
     knobs_ = knobs;
     live_.culler = std::move(culler);
@@ -93,15 +94,15 @@ void DebuggerSession::restart() {
     runFrame(live_, context(), 0, true);
 }
 
-const CullerCheckpoint* DebuggerSession::seekStart(int frame, int& first) const {
-    const CullerCheckpoint* from = checkpoints_.latestAtOrBefore(frame);
+bool DebuggerSession::seekStart(int frame, int& first) const {
+    const int from = checkpoints_.latestAtOrBefore(frame);
     // Forwards, go on from the current state unless a checkpoint is nearer.
-    if (frame > live_.frame && (!from || live_.frame + 1 >= from->frame)) {
+    if (frame > live_.frame && (from < 0 || live_.frame + 1 >= from)) {
         first = live_.frame + 1;
-        return nullptr;
+        return false;
     }
-    first = from ? from->frame : 0;
-    return from;
+    first = std::max(from, 0);
+    return from >= 0;
 }
 
 void DebuggerSession::seek(int frame) {
@@ -109,11 +110,11 @@ void DebuggerSession::seek(int frame) {
     cancelSeek();
     frame = std::clamp(frame, 0, std::max(scene_->frames - 1, 0));
     live_.replayed = 0;
+    checkpoints_.setFocus(frame);
     if (frame == live_.frame) return;
     int first = 0;
-    const CullerCheckpoint* from = seekStart(frame, first);
-    if (from) {
-        live_.culler = from->culler->clone();
+    if (seekStart(frame, first)) {
+        live_.culler = checkpoints_.restore(first);
         assert(live_.culler);  // it was copied once, so it copies again
         live_.culler->setDebugCapture(true);
     } else if (first == 0) {
@@ -128,13 +129,14 @@ void DebuggerSession::seekInBackground(int frame) {
     cancelSeek();
     frame = std::clamp(frame, 0, std::max(scene_->frames - 1, 0));
     int first = 0;
-    const CullerCheckpoint* from = seekStart(frame, first);
-    const bool restarts = !from && first == 0;
+    const bool from_checkpoint = seekStart(frame, first);
+    const bool restarts = !from_checkpoint && first == 0;
     if (frame == live_.frame || frame - first + 1 <= kForegroundSeekFrames) return seek(frame);
+    checkpoints_.setFocus(frame);
     // The worker's copies: the checkpoint's state, or the current one going
     // forwards, or a fresh culler for a restart (copied before its reset).
     CullingRun run;
-    run.culler = from ? from->culler->clone() : live_.culler->clone();
+    run.culler = from_checkpoint ? checkpoints_.restore(first) : live_.culler->clone();
     run.exact = live_.exact ? live_.exact->clone() : nullptr;
     if (!run.culler || (live_.exact && !run.exact)) return seek(frame);
     run.culler->setDebugCapture(true);
@@ -161,6 +163,7 @@ bool DebuggerSession::pollSeek() {
 bool DebuggerSession::step() {
     cancelSeek();
     if (live_.frame + 1 >= scene_->frames) return false;
+    checkpoints_.setFocus(live_.frame + 1);
     live_.replayed = 0;
     runFrames(live_, context(), live_.frame + 1, live_.frame + 1);
     return true;
@@ -169,6 +172,7 @@ bool DebuggerSession::step() {
 void DebuggerSession::setCullingCameraFrozen(bool frozen) {
     if (frozen == cullingCameraFrozen()) return;
     cancelSeek();
+    timeline_.stop();  // it offers checkpoints culled from the camera being changed
     if (frozen) {
         // The current frame was culled from exactly this camera, so nothing re-runs.
         frozen_camera_ = live_.culling_camera;
@@ -197,13 +201,14 @@ void DebuggerSession::restartTimeline() {
     if (!compute_ahead_) return;
     // The state before frame 0 is the first checkpoint (none: the culler
     // cannot be copied, and the timeline shows the frames run only).
-    const CullerCheckpoint* start = checkpoints_.latestAtOrBefore(0);
-    if (!start) return;
-    std::unique_ptr<Culler> culler = start->culler->clone();
+    std::unique_ptr<Culler> culler = checkpoints_.restore(0);
     std::unique_ptr<Culler> exact = live_.exact ? live_.exact->clone() : nullptr;
     if (!culler || (live_.exact && !exact)) return;
     culler->setDebugCapture(false);  // numbers only
-    timeline_.start(*scene_, std::move(culler), std::move(exact), frozen_from_, frozen_camera_);
+    // Its checkpoints are the session's too: once it has passed a frame, a
+    // seek there replays at most an interval.
+    timeline_.start(*scene_, std::move(culler), std::move(exact), frozen_from_, frozen_camera_,
+                    &checkpoints_);
 }
 
 void DebuggerSession::recordDrawMs(double ms) {

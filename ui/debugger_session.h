@@ -108,7 +108,6 @@ public:
     // step forward; a step back: up to the checkpoint interval), background
     // seeks included.
     int lastReplayedFrames() const { return live_.replayed; }
-    // Not while seeking(): a background seek is using them.
     const CullerCheckpoints& checkpoints() const { return checkpoints_; }
     // The selected culler's internal state at the current frame (its debug
     // capture is on), or null for a culler with nothing to show. Valid until the
@@ -124,9 +123,9 @@ private:
     void restart();  // reset both cullers, run frame 0
     RunContext context();
     // Where a seek to `frame` starts: the frame to cull first and, when that is
-    // a checkpoint's, the checkpoint (null: go on from the current frame, or
-    // restart when first is 0 and frame() is not before it).
-    const CullerCheckpoint* seekStart(int frame, int& first) const;
+    // a checkpoint's, true (false: go on from the current frame, or restart when
+    // first is 0).
+    bool seekStart(int frame, int& first) const;
     // Starts computing the run ahead (when asked to and the culler can be copied).
     void restartTimeline();
 

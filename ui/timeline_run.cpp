@@ -16,8 +16,8 @@ constexpr int kTimelineNice = 10;
 }  // namespace
 
 void TimelineRun::start(const Scene& scene, std::unique_ptr<Culler> culler,
-                        std::unique_ptr<Culler> exact, int frozen_from,
-                        const Camera& frozen_camera) {
+                        std::unique_ptr<Culler> exact, int frozen_from, const Camera& frozen_camera,
+                        CullerCheckpoints* checkpoints) {
     stop();
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -32,6 +32,7 @@ void TimelineRun::start(const Scene& scene, std::unique_ptr<Culler> culler,
     context.scene = &scene;
     context.frozen_from = frozen_from;
     context.frozen_camera = frozen_camera;
+    context.checkpoints = checkpoints;
     worker_ = std::thread([this, run, context]() mutable {
         setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), kTimelineNice);
         FrameHistory history;

@@ -2,8 +2,9 @@
 // thread at low priority: a copy of the selected culler as it was before frame
 // 0 and a copy of the oracle cull every frame of the scene in order, so the
 // timeline shows PVS/exact, false culls and counters of frames the user has not
-// reached yet. Shares nothing with the session but the const scene; what is
-// done so far is copied out under a lock.
+// reached yet. Shares with the session the const scene and the checkpoints
+// (thread-safe), which it fills as it goes; what is done so far is copied out
+// under a lock.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -23,9 +24,10 @@ public:
 
     // Starts over: `culler` holds the state before frame 0, `exact` is the
     // oracle (null when the culler is the oracle); a frozen culling camera as
-    // in RunContext.
+    // in RunContext. Its states are offered to `checkpoints` (may be null).
     void start(const Scene& scene, std::unique_ptr<Culler> culler, std::unique_ptr<Culler> exact,
-               int frozen_from, const Camera& frozen_camera);
+               int frozen_from, const Camera& frozen_camera,
+               CullerCheckpoints* checkpoints = nullptr);
     // Stops the worker and waits for it; nothing is computed any more.
     void stop();
     // Copies the frames done so far into `history` (sized to the scene's

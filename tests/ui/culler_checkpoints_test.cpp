@@ -36,14 +36,15 @@ TEST(CullerCheckpoints, SavedOnTheIntervalAndFoundAtOrBefore) {
     for (int frame = 0; frame <= 13; ++frame) saved.offer(frame, culler);
     saved.offer(8, culler);       // again: already saved
     EXPECT_EQ(saved.count(), 4);  // 0, 4, 8, 12
-    ASSERT_NE(saved.latestAtOrBefore(11), nullptr);
-    EXPECT_EQ(saved.latestAtOrBefore(11)->frame, 8);
-    EXPECT_EQ(saved.latestAtOrBefore(12)->frame, 12);
-    EXPECT_EQ(saved.latestAtOrBefore(0)->frame, 0);
-    EXPECT_EQ(saved.latestAtOrBefore(-1), nullptr);
+    EXPECT_EQ(saved.latestAtOrBefore(11), 8);
+    EXPECT_EQ(saved.latestAtOrBefore(12), 12);
+    EXPECT_EQ(saved.latestAtOrBefore(0), 0);
+    EXPECT_EQ(saved.latestAtOrBefore(-1), -1);
+    EXPECT_NE(saved.restore(8), nullptr);
+    EXPECT_EQ(saved.restore(9), nullptr);  // none saved there
     saved.dropAfter(5);
     EXPECT_EQ(saved.count(), 2);
-    EXPECT_EQ(saved.latestAtOrBefore(11)->frame, 4);
+    EXPECT_EQ(saved.latestAtOrBefore(11), 4);
 }
 
 TEST(CullerCheckpoints, ACullerThatCannotBeCopiedTurnsThemOff) {
@@ -62,14 +63,15 @@ TEST(CullerCheckpoints, OverBudgetTheFarOnesGoAndTheNearSpacingStays) {
     CullerCheckpoints saved(40 * kMiB, 4);
     const BlobCuller culler(kMiB, true);
     const int last = 400;
+    saved.setFocus(last);
     for (int frame = 0; frame <= last; ++frame) saved.offer(frame, culler);
     if (saved.bytes() == 0) GTEST_SKIP() << "the heap is not glibc's (a sanitized build)";
     EXPECT_LE(saved.bytes(), saved.budget());
     EXPECT_LT(saved.count(), last / 4 + 1);
-    EXPECT_EQ(saved.latestAtOrBefore(0)->frame, 0);
-    // Near the last frame, every interval is still there.
+    EXPECT_EQ(saved.latestAtOrBefore(0), 0);
+    // Near the focus, every interval is still there.
     for (int frame = last - kNearCheckpointFrames + 4; frame <= last; frame += 4)
-        EXPECT_EQ(saved.latestAtOrBefore(frame)->frame, frame) << frame;
+        EXPECT_EQ(saved.latestAtOrBefore(frame), frame) << frame;
     // Far away the gaps widen, evenly: no gap more than twice another far one.
     EXPECT_GT(saved.widestGap(), 4);
     EXPECT_LE(saved.widestGap(), 2 * (last - kNearCheckpointFrames) / (saved.count() - 17));

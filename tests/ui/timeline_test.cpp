@@ -1,8 +1,8 @@
 // The timeline (ui/timeline_run.h, ui/timeline_panel.h): the run computed ahead
 // on a worker equals the frames run in order, frame for frame; stopping it
 // midway is clean; a click on the plot asks for the frame under the mouse.
-#include <chrono>
 #include <cfloat>
+#include <chrono>
 #include <string>
 #include <thread>
 
@@ -52,6 +52,10 @@ TEST(TimelineRun, ComputedAheadEqualsTheFramesRunInOrder) {
         ASSERT_EQ(history.false_culls[i], want.false_culls[i]) << "frame " << f;
         ASSERT_EQ(history.stats[i].values, want.stats[i].values) << "frame " << f;
     }
+    // The run ahead left its checkpoints: a seek far ahead replays an interval.
+    ahead.seek(scene.frames - 1);
+    EXPECT_LE(ahead.lastReplayedFrames(), kDefaultCheckpointInterval);
+    EXPECT_EQ(ahead.result().pvs, in_order.result().pvs);  // in_order is at the last frame
     // Another culler starts it over; closing the session midway stops it.
     ASSERT_TRUE(ahead.selectAlgorithm("rgvc", error)) << error;
     EXPECT_LT(ahead.computedAhead(history), scene.frames);
