@@ -38,13 +38,20 @@ int runSeekBench(const BenchCommand& c, const Scene& scene, const std::vector<Al
 // `shot` and `view` share the window's options.
 struct WindowCommand {
     std::string scene, algo = defaultAlgorithm(), out, view = "main";
+    std::string compare;  // --compare B: a second culler beside the first
+    std::string lesson;   // --lesson FILE
+    std::string overlays;  // --overlays PRESET
     long long frame = 0, width = 1280, height = 720, exit_after = 0;
+    long long step = 1;   // shot and record: the lesson step shown, from 1
+    const CLI::Option* frame_option = nullptr;  // shot: --frame, required without --lesson
     bool play = false;
     double ui_scale = 1.0;
     KnobOptions knobs;
 };
-// The options shot, view and record share (SCENE, --algo, sizes, knobs), and
-// their checks: kExitOk when the window may open, `scene` loaded and `view` set.
+// The options shot, view and record share (SCENE, --algo, --compare,
+// --lesson, sizes, knobs), and their checks: kExitOk when the window may open,
+// `scene` loaded and `view` set. With a lesson SCENE may be left out: the
+// first step's scene is then the one loaded.
 void addWindowOptions(CLI::App& cmd, WindowCommand& c);
 int prepareWindowCommand(const std::string& command, const WindowCommand& c, Scene& scene,
                          ViewOptions& view);

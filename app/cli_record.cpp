@@ -41,6 +41,30 @@ struct PartialFolder {
     }
 };
 
+// Every step of the lesson the debugger plays, from the first: one image per
+// value of the step's animation, then the step as it ends, each held as long
+// as the lesson holds it. `record(seconds, file name)` draws and writes one.
+template <typename Record>
+bool recordLesson(Debugger& debugger, Record& record) {
+    const int steps = debugger.lesson().stepCount();
+    ProgressBar progress(steps);
+    bool ok = true;
+    for (int k = 0; ok && k < steps; ++k) {
+        debugger.goToLessonStep(k);
+        const LessonStep& step = debugger.lesson().step();
+        for (int image = 0; ok; ++image) {
+            char name[64];
+            std::snprintf(name, sizeof name, "step-%03d-%04d.png", k + 1, image);
+            const bool animating = debugger.lesson().animating();
+            ok = record(animating ? step.animate.seconds_per_value : step.seconds, name);
+            if (!animating) break;
+            debugger.advancePlayback(step.animate.seconds_per_value);
+        }
+        progress.step();
+    }
+    return ok;
+}
+
 }  // namespace
 
 CLI::App* addRecordCommand(CLI::App& app, RecordCommand& c) {
@@ -61,6 +85,11 @@ CLI::App* addRecordCommand(CLI::App& app, RecordCommand& c) {
         ->type_name("FILE");
     cmd->add_option("--view", c.window.view, viewNamesHelp())->type_name("V");
     addWindowOptions(*cmd, c.window);
+    cmd->get_option("--lesson")
+        ->description(
+            "record a lesson file (docs/lesson-format.md) instead of a frame range: every "
+            "step from the first, one image per value of its animation, each shown as long "
+            "as the lesson shows it, captions and overlays included (no --from, --to)");
     return cmd;
 }
 
@@ -69,10 +98,13 @@ int runRecord(const RecordCommand& c) {
     ViewOptions view;
     WindowCommand window = c.window;
     window.frame = c.from;
+    const bool lesson = !window.lesson.empty();
+    if (lesson && (c.from != 0 || c.to >= 0))
+        return usageError("record", "--lesson records the lesson's own frames: no --from, --to");
     if (const int status = prepareWindowCommand("record", window, scene, view); status != kExitOk)
         return status;
     const int last = int(c.to < 0 ? scene.frames - 1 : c.to);
-    if (last < int(c.from) || last >= scene.frames)
+    if (!lesson && (last < int(c.from) || last >= scene.frames))
         return usageError("record", "--to " + std::to_string(last) + " must lie from --from " +
                                         std::to_string(c.from) + " to the scene's last frame " +
                                         std::to_string(scene.frames - 1));
@@ -94,18 +126,27 @@ int runRecord(const RecordCommand& c) {
         ok = fs::create_directories(folder.path, exists_error);
         if (!ok) error = "cannot make the folder '" + folder.path.string() + "'";
     }
-    // The scene's own speed; GIF players show 2 hundredths at the least.
-    const int delay_cs = int(scene.dt * 100.0 + 0.5);
-    ProgressBar progress(last - int(c.from) + 1);
     std::vector<uint8_t> rgba;
-    for (int frame = int(c.from); ok && frame <= last; ++frame) {
-        if (frame > c.from) offscreen.debugger().session().step();
+    // One image: drawn, then added to the GIF for `seconds` or written as `name`.
+    auto record = [&](double seconds, const std::string& name) {
         ok = offscreen.draw(rgba, error);
+        // GIF players show 2 hundredths at the least.
+        const int delay_cs = std::max(int(seconds * 100.0 + 0.5), 2);
         if (ok && gif) ok = writer.addFrame(rgba, delay_cs, error);
         if (ok && !gif)
-            ok = writePngFile((folder.path / frameFileName(frame)).string(), offscreen.width(),
-                              offscreen.height(), rgba, error);
-        progress.step();
+            ok = writePngFile((folder.path / name).string(), offscreen.width(), offscreen.height(),
+                              rgba, error);
+        return ok;
+    };
+    if (lesson) {
+        ok = ok && recordLesson(offscreen.debugger(), record);
+    } else {
+        ProgressBar progress(last - int(c.from) + 1);
+        for (int frame = int(c.from); ok && frame <= last; ++frame) {
+            if (frame > c.from) offscreen.debugger().session().step();
+            record(scene.dt, frameFileName(frame));
+            progress.step();
+        }
     }
     if (ok && gif) ok = writer.close(error);
     if (ok && !gif) {
@@ -120,8 +161,11 @@ int runRecord(const RecordCommand& c) {
         std::cerr << "gridcull record: " << error << "\n";
         return kExitFailure;
     }
-    std::printf("recorded frames %lld to %d of %s: %s\n", c.from, last, scene.name.c_str(),
-                c.out.c_str());
+    if (lesson)
+        std::printf("recorded the lesson %s: %s\n", window.lesson.c_str(), c.out.c_str());
+    else
+        std::printf("recorded frames %lld to %d of %s: %s\n", c.from, last, scene.name.c_str(),
+                    c.out.c_str());
     return kExitOk;
 }
 

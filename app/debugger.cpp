@@ -36,26 +36,38 @@ bool Debugger::init(const Scene& scene, std::string& error) {
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
     session_.seek(options_.frame);
+    if (!options_.compare.empty() && !setCompare(options_.compare, error)) return false;
     if (options_.play) togglePlay();
     refreshSceneChoices();
+    if (options_.lesson) {
+        startLesson(*options_.lesson);
+        goToLessonStep(options_.lesson_step, options_.lesson_step_finished);
+    }
     return true;
 }
 
-void Debugger::syncFamilyView() {
-    family_view_ = nullptr;
-    const FamilyEntry* family = familyOfAlgorithm(session_.algo());
+void Debugger::syncFamilyView() { family_view_ = familyViewOf(session_.algo()); }
+
+FamilyView* Debugger::familyViewOf(const std::string& algo) {
+    const FamilyEntry* family = familyOfAlgorithm(algo);
     const FamilyViewEntry* entry = family ? findFamilyView(family->id) : nullptr;
-    if (!entry) return;
+    if (!entry) return nullptr;
     std::unique_ptr<FamilyView>& view = family_views_[entry->family];
     if (!view) {
         view = entry->make();
+        // The preset asked for on the command line, when the family offers it.
+        const std::vector<OverlayPreset> presets = view->overlayPresets();
+        const bool offered = options_.overlays &&
+                             std::find(presets.begin(), presets.end(), *options_.overlays) !=
+                                 presets.end();
+        if (!presets.empty()) view->applyOverlayPreset(offered ? *options_.overlays : presets.front());
         // The flags name things of the scene they were checked against (init).
         std::string error;
         if (session_.sceneGeneration() == flags_scene_generation_ &&
             !view->applyFlags(options_.view_flags, session_.scene(), error))
             scene_errors_ = {error};
     }
-    family_view_ = view.get();
+    return view.get();
 }
 
 int Debugger::outlinedObject() const {
@@ -77,34 +89,49 @@ FamilyViewContext Debugger::familyContext() const {
 }
 
 void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
-                             const WindowRect& view) {
+                             const WindowLayout& layout) {
     hovered_index_ = -1;
     hovered_distance_ = 0.0;
     ViewPointer pointer;
-    if (inside && view.contains(x, y)) {
+    const ScenePanes split = panes(layout);
+    const ScenePane* over = nullptr;
+    for (int k = 0; k < split.count; ++k)
+        if (inside && split.pane[k].rect.contains(x, y)) over = &split.pane[k];
+    FamilyView* view = family_view_;
+    if (over) {
+        const WindowRect& r = over->rect;
         const Scene& scene = session_.scene();
-        const ViewMatrices m = view_camera_.matrices(view_mode_, session_.cullingCamera(),
-                                                     double(view.width) / std::max(view.height, 1));
-        viewRay(m, x - view.x, y - view.y, view.width, view.height, pointer.origin,
-                pointer.direction);
+        const DebuggerSession& session = sessionOf(*over);
+        const ViewMatrices m = view_camera_.matrices(over->mode, session.cullingCamera(),
+                                                     double(r.width) / std::max(r.height, 1));
+        viewRay(m, x - r.x, y - r.y, r.width, r.height, pointer.origin, pointer.direction);
         pointer.over_view = true;
         pointer.clicked = clicked;
         if (scene.dimensions == 2) {
-            hovered_index_ = pickObject2d(scene, session_.t(), pointer.origin, session_.states());
+            hovered_index_ = pickObject2d(scene, session.t(), pointer.origin, session.states());
         } else {
             double distance = 0.0;
             const int id =
-                pickObject(scene, session_.t(), pointer.origin, pointer.direction, &distance);
+                pickObject(scene, session.t(), pointer.origin, pointer.direction, &distance);
             if (id >= 0) {
                 hovered_index_ = scene.indexOf(id);
                 hovered_distance_ = distance;
             }
         }
+        view = viewOf(*over);
+        if (view) view->pointer(paneContext(*over), pointer);
+        if (view == family_view_) return;
     }
-    if (family_view_) family_view_->pointer(familyContext(), pointer);
+    // The selected family's view hears that the pointer is not over it.
+    if (family_view_) family_view_->pointer(familyContext(), ViewPointer{});
 }
 
 void Debugger::advancePlayback(double seconds) {
+    if (lesson_.active()) {
+        const LessonPlayer::Tick tick = lesson_.advance(seconds);
+        if (tick.step_changed) showLessonStep();
+        else if (tick.animation_changed) applyLessonFlags();
+    }
     session_.pollSeek();
     if (session_.seeking()) return;  // the frame shown waits for the seek
     if (!playing_) return;
@@ -194,6 +221,7 @@ FrameSnapshot Debugger::snapshot() const {
     s.knob_cost = knob_cost_;
     s.algo_names = &algo_names_;
     s.algo_index = indexOfName(algo_names_, session_.algo());
+    s.compare_index = compare_ ? indexOfName(algo_names_, compare_->algo()) : -1;
     s.result = &session_.result();
     s.exact = &session_.exactResult();
     s.false_culled = &session_.falseCulled();
@@ -211,12 +239,16 @@ FrameSnapshot Debugger::snapshot() const {
     s.scene_choices = &scene_choices_;
     s.recent_scene_count = int(recent_scenes_.size());
     s.note = &note_;
+    s.panes = pane_captions_;
+    s.lesson = lesson_.active() ? &lesson_ : nullptr;
     return s;
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
     noteCheckpoints();
     ahead_frames_ = session_.computedAhead(ahead_);
+    syncCompare(false);
+    captionPanes(layout);
     return drawDebuggerUi(snapshot(), ui_state_, layout, family_view_, familyContext());
 }
 
@@ -264,6 +296,12 @@ void Debugger::openSceneFile(const std::string& path) {
     syncFamilyView();
     renderer_.setScene(session_.scene());
     view_camera_.frameScene(session_.scene());
+    if (compare_) {
+        // The compared culler follows to the new scene when it runs there.
+        const std::string compared = compare_->algo();
+        compare_.reset();
+        if (!setCompare(compared, error)) note_ += (note_.empty() ? "" : "; ") + error;
+    }
 }
 
 void Debugger::selectAlgorithm(const std::string& name) {
@@ -293,38 +331,21 @@ void Debugger::apply(const UiActions& actions) {
     if (algorithm.select_algo && *algorithm.select_algo >= 0 &&
         *algorithm.select_algo < int(algo_names_.size()))
         selectAlgorithm(algo_names_[size_t(*algorithm.select_algo)]);
+    if (algorithm.compare_algo) {
+        std::string error;
+        const int k = *algorithm.compare_algo;
+        if (!setCompare(k >= 0 && k < int(algo_names_.size()) ? algo_names_[size_t(k)] : "",
+                        error))
+            scene_errors_ = {error};
+    }
     if (algorithm.freeze_culling) session_.setCullingCameraFrozen(*algorithm.freeze_culling);
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
     if (actions.scene.open) openSceneFile(actions.scene.path);
     if (!actions.family.knobs.empty()) applyKnobs(actions.family.knobs, {});
     if (actions.knobs.apply) applyKnobs(actions.knobs.set, actions.knobs.unset);
-}
-
-bool Debugger::throughCullingCamera() const {
-    return session_.scene().dimensions == 3 && view_mode_ == ViewMode::CullingCamera;
-}
-
-void Debugger::drawScene(const WindowLayout& layout, int framebuffer_height, double scale) {
-    SceneDrawInput input;
-    input.scene = &session_.scene();
-    input.t = session_.t();
-    input.states = &session_.states();
-    input.culling_camera = session_.cullingCamera();
-    const bool through_camera = throughCullingCamera();
-    input.show_culling_camera = !through_camera;
-    input.through_culling_camera = through_camera;
-    const WindowRect& v = layout.scene_view;
-    input.viewport = {int(v.x * scale), int(v.y * scale), int(v.width * scale),
-                      int(v.height * scale)};
-    input.framebuffer_height = framebuffer_height;
-    input.view = view_camera_.matrices(view_mode_, session_.cullingCamera(),
-                                       double(v.width) / std::max(v.height, 1));
-    const FamilyViewContext context = familyContext();
-    input.hovered_index = outlinedObject();
-    input.family = family_view_;
-    input.family_context = &context;
-    last_draw_ms_ = renderer_.draw(input);
-    session_.recordDrawMs(last_draw_ms_);
+    if (actions.overlay_preset) applyOverlayPreset(*actions.overlay_preset);
+    if (actions.lesson.go_to >= 0) goToLessonStep(actions.lesson.go_to);
+    if (actions.lesson.auto_play >= 0) setLessonAutoPlay(actions.lesson.auto_play == 1);
 }
 
 namespace {
@@ -376,6 +397,7 @@ void Debugger::applyKnobs(const std::vector<std::pair<std::string, double>>& set
     cost.rerun_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     cost.frames = last + 1;
+    if (compare_ && !compare_->setKnobs(knobs, error)) note_ = "the compared culler: " + error;
     runFigures(session_.history(), last, cost.cull_ms_after, cost.pvs_ratio_after);
     cost.valid = true;
     knob_cost_ = cost;

@@ -19,6 +19,8 @@
 #include "ui/debugger_ui.h"
 #include "ui/family_view.h"
 #include "ui/layout.h"
+#include "ui/lesson_player.h"
+#include "ui/scene_panes.h"
 
 namespace gridcull {
 
@@ -50,10 +52,11 @@ public:
     // Shots hide wall-clock times: they differ from run to run.
     void setShowTimings(bool show) { show_timings_ = show; }
 
-    // Looks up the object under (x, y) in window pixels and tells the family's
-    // view where the pointer is; `clicked` when the left button was clicked.
-    // Clears the hover when the point is outside `view` or `inside` is false.
-    void updatePointer(double x, double y, bool inside, bool clicked, const WindowRect& view);
+    // Looks up the object under (x, y) in window pixels, in the pane of the
+    // scene view it is over, and tells that pane's family view where the
+    // pointer is; `clicked` when the left button was clicked. Clears the hover
+    // when the point is outside every pane or `inside` is false.
+    void updatePointer(double x, double y, bool inside, bool clicked, const WindowLayout& layout);
     // Advances playback by `seconds` of wall time: one scene frame per scene dt,
     // at most a few frames per call so slow culling cannot snowball.
     void advancePlayback(double seconds);
@@ -66,6 +69,35 @@ public:
     void cancelSeek() { session_.cancelSeek(); }
     // Opens a scene file as the scene panel does; on failure the panel shows why.
     void openSceneFile(const std::string& path);
+    // Selects the culler as the panel does; on failure the panel shows why.
+    void selectAlgorithm(const std::string& name);
+
+    // A second culler on the same frame, shown in the right half of the view
+    // (app/debugger_panes.cpp); "" shows none. False and `error` when it does
+    // not run on the scene.
+    bool setCompare(const std::string& algo, std::string& error);
+    // The compared culler's session (null: none).
+    const DebuggerSession* compareSession() const { return compare_.get(); }
+    // Objects (indices) in one culler's PVS and not the other's, this frame;
+    // empty while the compared culler is not on the same frame yet.
+    const std::vector<int>& differingObjects() const { return differing_; }
+    // Brings the compared culler to the shown frame, camera and knobs; with
+    // `wait`, in the foreground (shots, lessons, tests), else a long seek runs
+    // in the background and this is polled each frame.
+    void syncCompare(bool wait);
+    // Where the scene view's panes are in `layout`.
+    ScenePanes panes(const WindowLayout& layout) const;
+
+    // Sets the selected family's overlay toggles to one of its presets.
+    void applyOverlayPreset(OverlayPreset preset);
+
+    // Plays `lesson` (checked by app/lesson_file.h) from its first step
+    // (app/debugger_lesson.cpp).
+    void startLesson(Lesson lesson);
+    const LessonPlayer& lesson() const { return lesson_; }
+    // Shows lesson step `index` (clamped); `finished`: its animation at its end.
+    void goToLessonStep(int index, bool finished = false);
+    void setLessonAutoPlay(bool on);
 
     // The panels; returns the user's actions (apply them after the frame).
     UiActions drawUi(const WindowLayout& layout);
@@ -87,12 +119,26 @@ private:
     void applyKnobs(const std::vector<std::pair<std::string, double>>& set,
                     const std::vector<std::string>& unset);
     FamilyViewContext familyContext() const;
+    // The context of one pane: its session's frame and states, its view mode.
+    FamilyViewContext paneContext(const ScenePane& pane) const;
+    const DebuggerSession& sessionOf(const ScenePane& pane) const {
+        return pane.compared && compare_ ? *compare_ : session_;
+    }
+    // The family view that draws a pane's overlay (the compared culler's
+    // family's on the B side), null for none.
+    FamilyView* viewOf(const ScenePane& pane);
+    void drawPane(const ScenePane& pane, int framebuffer_height, double scale);
+    // The panes' captions for the snapshot.
+    void captionPanes(const WindowLayout& layout);
+    // Applies the lesson step shown and the value its animation reached.
+    void showLessonStep();
+    void applyLessonFlags();
     // Points family_view_ at the selected algorithm's family's view, made the
     // first time that family is selected and kept after, so its state (toggles,
     // picks) survives switching away and back.
     void syncFamilyView();
-    void selectAlgorithm(const std::string& name);
-    bool throughCullingCamera() const;
+    // The family view of algorithm `algo`, made the first time (null: none).
+    FamilyView* familyViewOf(const std::string& algo);
 
     ViewOptions options_;
     DebuggerSession session_;
@@ -122,6 +168,11 @@ private:
     // algorithm's (null for a family without one).
     std::map<std::string, std::unique_ptr<FamilyView>> family_views_;
     FamilyView* family_view_ = nullptr;
+    // The compared culler (null: none) and where the two PVS differ.
+    std::unique_ptr<DebuggerSession> compare_;
+    std::vector<int> differing_;
+    std::vector<PaneCaption> pane_captions_;
+    LessonPlayer lesson_;
     // The scene the command line's view flags were checked against: a view made
     // later applies them only while that scene is open.
     int flags_scene_generation_ = -1;

@@ -20,10 +20,14 @@ constexpr float kShotDeltaTime = 1.0f / 60.0f;
 // What a `--view` name draws: panels or not, and from which camera.
 bool parseView(const std::string& view, bool& panels, ViewMode& mode) {
     mode = ViewMode::Overview;
-    panels = view == "main" || view == "main-camera";
+    panels = view == "main" || view == "main-camera" || view == "main-cameras";
     if (view == "main" || view == "scene") return true;
     if (view == "camera" || view == "main-camera") {
         mode = ViewMode::CullingCamera;
+        return true;
+    }
+    if (view == "cameras" || view == "main-cameras") {
+        mode = ViewMode::Cameras;
         return true;
     }
     return false;
@@ -54,12 +58,14 @@ bool OffscreenWindow::open(const Scene& scene, const ViewOptions& options, std::
     debugger_ = std::make_unique<Debugger>(still);
     debugger_->setShowTimings(false);
     if (!debugger_->init(scene, error)) return false;
-    debugger_->setViewMode(mode);
+    // A lesson's step chooses its own view.
+    if (!options.lesson) debugger_->setViewMode(mode);
     layout_ = computeLayout(width_, height_, panels_, options.ui_scale);
     return true;
 }
 
 bool OffscreenWindow::draw(std::vector<uint8_t>& rgba, std::string& error) {
+    debugger_->syncCompare(true);  // a picture of both cullers on the same frame
     if (panels_) {
         // No clock, no pointer: the same frame always lays out the same.
         ImGuiIO& io = ImGui::GetIO();

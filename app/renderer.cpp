@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <unordered_map>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -64,6 +65,11 @@ constexpr int kSphereStacks[4] = {16, 8, 5, 3};
 constexpr double kSphereLodPixels[4] = {24.0, 10.0, 4.0, 0.0};
 constexpr int kDiscSegments = 40;
 const glm::vec4 kBackground(0.10f, 0.11f, 0.13f, 1.0f);
+// Comparing two cullers, how far objects in both PVS or neither fade towards
+// the background, so the few that differ stand out in their state's colour.
+constexpr float kSameInBothFade = 0.7f;
+// Opacity of the veil over what lies outside the culling camera's image.
+constexpr float kOutsideImageVeil = 0.6f;
 
 // 2D depth layer: higher states are drawn over lower ones.
 float layerDepth(ObjectState state) {
@@ -200,6 +206,7 @@ void Renderer::setScene(const Scene& scene) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(soup.size() * sizeof(ShadedVertex)), soup.data(),
                  GL_STATIC_DRAW);
     instances_.reserve(scene.objects.size());
+    differs_.reserve(scene.objects.size());
     sphere_lod_.reserve(groups_.empty() ? 0 : groups_[0].objects.size());
 }
 
@@ -212,6 +219,8 @@ Renderer::Instance Renderer::makeInstance(const SceneDrawInput& input, int index
     const glm::dvec3 d = scene.displacementAt(object, input.t);
     Instance instance;
     instance.color = toRgba(objectStateColor(state));
+    if (input.differing && !differs_[size_t(index)])
+        instance.color = glm::mix(instance.color, kBackground, kSameInBothFade);
     switch (object.shape) {
         case ShapeKind::Sphere:
             instance.offset = glm::vec3(object.center + d);
@@ -327,6 +336,20 @@ void Renderer::drawObjects(const SceneDrawInput& input) {
     glBindVertexArray(0);
 }
 
+void Renderer::dimOutsideCullingImage(const SceneDrawInput& input) {
+    const WindowRect& r = input.viewport;
+    const ViewRect image =
+        cullingImageFrame(input.culling_camera.aspect, r.width, r.height, 1, 1).area;
+    const Paint veil{Swatch::NearBlack, kOutsideImageVeil};
+    DebugDrawBatch& batch = debug_draw_.batch();
+    batch.clear();
+    batch.fillRect({0.0, 0.0, double(r.width), image.y0}, veil);
+    batch.fillRect({0.0, image.y1, double(r.width), double(r.height)}, veil);
+    batch.fillRect({0.0, image.y0, image.x0, image.y1}, veil);
+    batch.fillRect({image.x1, image.y0, double(r.width), image.y1}, veil);
+    debug_draw_.flush(glm::mat4(input.view.view_projection), r.width, r.height);
+}
+
 double Renderer::draw(const SceneDrawInput& input) {
     const auto start = std::chrono::steady_clock::now();
     const WindowRect& r = input.viewport;
@@ -339,8 +362,16 @@ double Renderer::draw(const SceneDrawInput& input) {
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
+    if (input.differing) {
+        differs_.assign(input.scene->objects.size(), 0);
+        for (int i : *input.differing)
+            if (i >= 0 && size_t(i) < differs_.size()) differs_[size_t(i)] = 1;
+    }
     drawOverlays(input, true);
     drawObjects(input);
+    // Over the objects, under the overlay (whose panels, a Z-pyramid say, may
+    // sit in the bars).
+    if (input.through_culling_camera) dimOutsideCullingImage(input);
     if (input.family && input.family_context) {
         // Under the outlines of false culls, which must stay findable.
         OverlayView view;
@@ -349,6 +380,7 @@ double Renderer::draw(const SceneDrawInput& input) {
         view.height = r.height;
         view.through_culling_camera = input.through_culling_camera;
         view.culling_aspect = input.culling_camera.aspect;
+        view.culling_camera = input.culling_camera;
         debug_draw_.batch().clear();
         input.family->drawOverlay(*input.family_context, view, debug_draw_.batch());
         debug_draw_.flush(glm::mat4(input.view.view_projection), r.width, r.height);

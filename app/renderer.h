@@ -11,6 +11,8 @@
 // states layered in depth so a false cull is never hidden under a culled shape.
 // Over the objects and under the outlines, the selected family's overlay
 // (ui/family_view.h), drawn through the debug-draw interface (app/gl_debug_draw.h).
+// Looking through the culling camera, what lies outside its image (the bars a
+// view of another aspect shows beside it) is dimmed: no culler saw it.
 //
 // All buffers are sized on setScene() and reused: a steady state allocates
 // nothing per frame. Needs a current GL 3.3 core context for every call.
@@ -43,6 +45,10 @@ struct SceneDrawInput {
     WindowRect viewport;                  // framebuffer pixels, origin top left
     int framebuffer_height = 0;           // to flip the viewport into GL's bottom-left origin
     int hovered_index = -1;               // outlined when >= 0
+    // Comparing two cullers: the objects (indices) in one PVS only, drawn in
+    // full colour (and outlined while there are few) with every other object
+    // faded; null when not comparing.
+    const std::vector<int>* differing = nullptr;
     bool through_culling_camera = false;  // 3D, the view is the culling camera's
     // The selected family's view, which draws its overlay (null: none), and the
     // frame as it sees it.
@@ -88,6 +94,7 @@ private:
     void drawObjects(const SceneDrawInput& input);
     void drawOverlays(const SceneDrawInput& input, bool under_objects);
     void bindInstanceAttributes(size_t first_instance) const;
+    void dimOutsideCullingImage(const SceneDrawInput& input);
 
     GlProgram program_;
     GLint view_projection_location_ = -1;
@@ -98,6 +105,7 @@ private:
     GlBuffer sphere_indices_;
     SphereLod sphere_lods_[kSphereLods];
     std::vector<uint8_t> sphere_lod_;  // per sphere of the group, this frame
+    std::vector<uint8_t> differs_;     // per object: in input.differing, this frame
     GlVertexArray soup_vao_;
     GlBuffer soup_vertices_;
     StreamBuffer instance_buffer_;

@@ -1,5 +1,6 @@
 // The scene view's overlays (Renderer::drawOverlays): world box, 2D grid, the
-// culling camera's frustum or wedge, outlines of false-culled and hovered objects.
+// culling camera's frustum or wedge, outlines of false-culled, compared-differing
+// and hovered objects.
 #include <algorithm>
 
 #include "app/renderer.h"
@@ -13,6 +14,9 @@ const glm::vec4 kWorldEdge(0.50f, 0.52f, 0.56f, 1.0f);
 const glm::vec4 kGridLine(0.24f, 0.25f, 0.28f, 1.0f);
 const glm::vec4 kHover(1.0f, 1.0f, 1.0f, 1.0f);
 constexpr float kHighlightWidth = 3.0f;
+// Comparing two cullers, objects in one PVS only are outlined while there are
+// at most this many; more outlines would hide the scene (the fade still shows them).
+constexpr size_t kMaxDifferenceOutlines = 200;
 constexpr float kFrustumWidth = 2.0f;
 // The smallest on-screen voxel, in pixels, for which the 2D grid is drawn.
 constexpr double kMinGridPixels = 6.0;
@@ -69,7 +73,21 @@ void Renderer::drawOverlays(const SceneDrawInput& input, bool under_objects) {
 
     // False culls and the hovered object: outlines over everything, so one wrong
     // object shows even in a still image of a crowded scene.
+    // Differences between compared cullers first, so a false cull's outline
+    // stays on top of them. Each is outlined in its own state's colour, which
+    // the faded objects around it lack: no colour of the palette is spent on it.
     const std::vector<ObjectState>& states = *input.states;
+    if (input.differing && input.differing->size() <= kMaxDifferenceOutlines) {
+        for (int i : *input.differing) {
+            if (i < 0 || size_t(i) >= scene.objects.size() || size_t(i) >= states.size()) continue;
+            const glm::vec4 color = toRgba(objectStateColor(states[size_t(i)]));
+            if (dimensions_ == 2)
+                appendOutline2d(highlight_, scene, scene.objects[size_t(i)], input.t, color);
+            else
+                appendBoxEdges(highlight_, scene.boundsAt(scene.objects[size_t(i)], input.t),
+                               color);
+        }
+    }
     const glm::vec4 false_color = toRgba(objectStateColor(ObjectState::FalseCulled));
     for (size_t i = 0; i < scene.objects.size() && i < states.size(); ++i) {
         if (states[i] != ObjectState::FalseCulled) continue;

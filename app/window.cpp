@@ -37,8 +37,10 @@ void printDrawSummary(std::vector<double>& draw_ms) {
 
 const char* viewNamesHelp() {
     return "main (the window: view and panels), scene (the view alone), camera (3D: "
-           "through the culling camera, no panels) or main-camera (the window, its view "
-           "through the culling camera); default main";
+           "through the culling camera, no panels), main-camera (the window, its view "
+           "through the culling camera), cameras (3D: the orbit view and the culling "
+           "camera's side by side, no panels) or main-cameras (the window with them); "
+           "default main";
 }
 
 int runWindow(const Scene& scene, const ViewOptions& window_options) {

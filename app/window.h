@@ -2,11 +2,15 @@
 // way, so `gridcull shot` is a picture of what the window shows.
 #pragma once
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "culling/api/knobs.h"
 #include "culling/registry/registry.h"
 #include "culling/scene/scene.h"
+#include "ui/lesson.h"
+#include "ui/overlay_preset.h"
 
 namespace gridcull {
 
@@ -15,6 +19,10 @@ constexpr double kMinUiScale = 0.5, kMaxUiScale = 4.0;
 
 struct ViewOptions {
     std::string algo = defaultAlgorithm();  // the culler whose PVS colours the objects
+    std::string compare;                   // a second culler shown beside it ("": none)
+    // The overlay preset family views start with (--overlays; unset: each
+    // family's first, or its first when it does not offer this one).
+    std::optional<OverlayPreset> overlays;
     int width = 1280;                      // window / image size in pixels
     int height = 720;
     int frame = 0;              // first frame shown (shot: the frame drawn)
@@ -25,6 +33,11 @@ struct ViewOptions {
     bool compute_ahead = false;  // the timeline computed ahead in the background (window)
     bool play = false;          // window: start playing instead of paused
     int exit_after_frames = 0;  // window: close by itself after this many frames (0: never)
+    // A lesson to play (app/lesson_file.h checked it), from step lesson_step;
+    // lesson_step_finished: that step's animation at its end (shots).
+    std::shared_ptr<const Lesson> lesson;
+    int lesson_step = 0;
+    bool lesson_step_finished = false;
 };
 
 // The names `shot --view` accepts ("main": the whole window with its panels, ...).

@@ -21,7 +21,7 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
     const bool dimensions3 = debugger.session().scene().dimensions == 3;
 
     const bool clicked = over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left);
-    debugger.updatePointer(io.MousePos.x, io.MousePos.y, over_view, clicked, view);
+    debugger.updatePointer(io.MousePos.x, io.MousePos.y, over_view, clicked, layout);
 
     ViewCamera& camera = debugger.viewCamera();
     if (mouse_free && io.MouseDown[ImGuiMouseButton_Right]) {
@@ -45,6 +45,14 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
         debugger.apply(actions);
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) debugger.toggleFreeze();
+    // A lesson's steps: a presentation clicker sends PageDown / PageUp.
+    if (debugger.lesson().active()) {
+        const int step = debugger.lesson().stepIndex();
+        if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN) || ImGui::IsKeyPressed(GLFW_KEY_N))
+            debugger.goToLessonStep(step + 1);
+        if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP) || ImGui::IsKeyPressed(GLFW_KEY_P))
+            debugger.goToLessonStep(step - 1);
+    }
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) debugger.cancelSeek();
     // Ctrl+plus / Ctrl+minus (main keyboard or keypad): a fifth larger or smaller.
     if (io.KeyCtrl) {

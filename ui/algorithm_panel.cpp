@@ -24,6 +24,23 @@ AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
         }
         ImGui::EndCombo();
     }
+    const char* compared = snapshot.compare_index >= 0 && snapshot.compare_index < int(names.size())
+                               ? names[size_t(snapshot.compare_index)].c_str()
+                               : "none";
+    ImGui::SetNextItemWidth(-scaledPixels(60));
+    if (ImGui::BeginCombo("beside it", compared)) {
+        if (ImGui::Selectable("none", snapshot.compare_index < 0) && snapshot.compare_index >= 0)
+            action.compare_algo = -1;
+        for (int i = 0; i < int(names.size()); ++i) {
+            const bool selected = i == snapshot.compare_index;
+            if (ImGui::Selectable(names[size_t(i)].c_str(), selected) && !selected)
+                action.compare_algo = i;
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A second culler on the same frame, in the right half of the view;\n"
+                          "objects in one PVS and not the other are outlined in both");
 
     bool frozen = snapshot.culling_camera_frozen;
     if (ImGui::Checkbox("freeze culling camera", &frozen)) action.freeze_culling = frozen;
@@ -39,6 +56,9 @@ AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
         changed |= ImGui::RadioButton("fly", &mode, int(ViewMode::Fly));
         ImGui::SameLine();
         changed |= ImGui::RadioButton("culling camera", &mode, int(ViewMode::CullingCamera));
+        ImGui::SetCursorPosX(ImGui::GetCursorPosX() + ImGui::CalcTextSize("view: ").x);
+        changed |= ImGui::RadioButton("orbit and culling camera side by side", &mode,
+                                      int(ViewMode::Cameras));
         if (changed) action.view_mode = ViewMode(mode);
         ImGui::TextDisabled(snapshot.view_mode == ViewMode::Fly
                                 ? "WASD/QE move, right-drag look, shift fast"

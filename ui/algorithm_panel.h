@@ -1,5 +1,6 @@
-// Algorithm and cameras: which culler colours the objects, freezing the culling
-// camera, and how the view looks at the scene.
+// Algorithm and cameras: which culler colours the objects (and which one, if
+// any, is shown beside it to compare), freezing the culling camera, and how the
+// view looks at the scene.
 #pragma once
 #include <optional>
 
@@ -9,6 +10,7 @@ namespace gridcull {
 
 struct AlgorithmAction {
     std::optional<int> select_algo;      // index into snapshot.algo_names
+    std::optional<int> compare_algo;     // index into snapshot.algo_names; -1: compare with none
     std::optional<bool> freeze_culling;  // freeze / release the culling camera
     std::optional<ViewMode> view_mode;
 };

@@ -97,6 +97,8 @@ public:
     double t() const { return scene_->timeOfFrame(live_.frame); }
     const std::string& algo() const { return algo_; }
     bool cullingCameraFrozen() const { return frozen_from_ >= 0; }
+    // The frame whose camera is frozen (frozen at it, culled from it after), or -1.
+    int frozenAt() const { return frozen_from_ - (frozen_from_ >= 0 ? 1 : 0); }
     // The camera the cullers used for the current frame.
     const Camera& cullingCamera() const { return live_.culling_camera; }
     const FrameResult& result() const { return live_.result; }

@@ -1,6 +1,6 @@
 // All the debugger's panels for one frame, in one column at a fixed place on the
-// right: scene, playback, algorithm and cameras, the selected family's own panel
-// (ui/family_view.h), the knobs (collapsed until opened), statistics, the object under the mouse,
+// right: the lesson (while one plays), scene, playback, algorithm and cameras,
+// the overlay presets and the selected family's own panel (ui/family_view.h), the knobs (collapsed until opened), statistics, the object under the mouse,
 // legend. Returns what the user asked for; the app applies it after the frame.
 #pragma once
 #include "ui/algorithm_panel.h"
@@ -8,6 +8,7 @@
 #include "ui/frame_snapshot.h"
 #include "ui/knobs_panel.h"
 #include "ui/layout.h"
+#include "ui/lesson_panel.h"
 #include "ui/playback_panel.h"
 #include "ui/scene_panel.h"
 #include "ui/stats_panel.h"
@@ -29,6 +30,8 @@ struct UiActions {
     FamilyAction family;
     KnobsAction knobs;
     TimelineAction timeline;
+    LessonAction lesson;
+    std::optional<OverlayPreset> overlay_preset;  // for the selected family's overlay
 };
 
 // Call between ImGui::NewFrame() and ImGui::Render(). Precondition: the

@@ -26,6 +26,7 @@
 #include "ui/debug_draw.h"
 #include "ui/image_frame.h"
 #include "ui/object_state.h"
+#include "ui/overlay_preset.h"
 #include "ui/view_mode.h"
 
 namespace gridcull {
@@ -64,6 +65,10 @@ struct OverlayView {
     // over the objects it describes.
     bool through_culling_camera = false;
     double culling_aspect = 1.0;
+    // The camera the culler used this frame (3D): from outside it, an
+    // image-space overlay can be held up on a plane across its frustum
+    // (ui/image_plane_draw.h).
+    Camera culling_camera;
     ImageFrame cullingImage(int image_width, int image_height) const {
         return cullingImageFrame(culling_aspect, width, height, image_width, image_height);
     }
@@ -86,6 +91,12 @@ public:
         (void)flags, (void)scene, (void)error;
         return true;
     }
+    // The overlay presets the family offers, in the panel's order; the first is
+    // the one a new view starts with (empty: the family has no toggles).
+    virtual std::vector<OverlayPreset> overlayPresets() const { return {}; }
+    // Sets the overlay's toggles to `preset`, one of overlayPresets(); the
+    // family's own toggles stay free to change afterwards.
+    virtual void applyOverlayPreset(OverlayPreset preset) { (void)preset; }
     // Another scene was opened: forget what pointed into the old one.
     virtual void sceneChanged() {}
     // The pointer over the view (hovering; a click picks).

@@ -9,6 +9,7 @@
 #include "culling/api/knobs.h"
 #include "culling/scene/scene.h"
 #include "grid/aabb.h"
+#include "ui/layout.h"
 #include "ui/object_state.h"
 #include "ui/view_mode.h"
 
@@ -60,6 +61,15 @@ struct KnobApplyCost {
     double pvs_ratio_after = 0.0;
 };
 
+// One part of the scene view and what its caption says (ui/scene_panes.h).
+struct PaneCaption {
+    WindowRect rect;
+    std::string title;   // "A: rgvc", "culling camera"
+    std::string detail;  // a line of figures, "" for none
+};
+
+class LessonPlayer;
+
 struct FrameSnapshot {
     const Scene* scene = nullptr;
     int frame = 0;
@@ -73,6 +83,7 @@ struct FrameSnapshot {
     // run on its dimension), and the selected one.
     const std::vector<std::string>* algo_names = nullptr;
     int algo_index = 0;                              // into algo_names
+    int compare_index = -1;  // the culler shown beside it (into algo_names), -1: none
     const FrameResult* result = nullptr;             // the selected culler at `frame`
     const FrameResult* exact = nullptr;              // the oracle at `frame`
     const std::vector<int>* false_culled = nullptr;  // ids, ascending
@@ -100,6 +111,12 @@ struct FrameSnapshot {
     // What the window did on its own that the user should know, e.g. that opening
     // a 2D scene switched the culler from a 3D-only one ("" for nothing).
     const std::string* note = nullptr;
+
+    // The scene view's panes when it is split (A/B, or both cameras); empty
+    // when it is one.
+    std::vector<PaneCaption> panes;
+    // The lesson playing (null: none).
+    const LessonPlayer* lesson = nullptr;
 };
 
 }  // namespace gridcull

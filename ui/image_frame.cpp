@@ -9,6 +9,12 @@ glm::dvec2 ImageFrame::toView(double px, double py) const {
             area.y0 + py * (area.y1 - area.y0) / image_height};
 }
 
+glm::dvec2 ImageFrame::toImage(const glm::dvec2& v) const {
+    const double w = area.x1 - area.x0, h = area.y1 - area.y0;
+    return {w > 0.0 ? (v.x - area.x0) * image_width / w : 0.0,
+            h > 0.0 ? (v.y - area.y0) * image_height / h : 0.0};
+}
+
 ViewRect ImageFrame::pixelsToView(int x0, int y0, int x1, int y1) const {
     const glm::dvec2 a = toView(x0, y0), b = toView(x1 + 1, y1 + 1);
     return {a.x, a.y, b.x, b.y};

@@ -24,6 +24,8 @@ struct ImageFrame {
     // The view point of continuous image coordinates (px, py); a pixel's centre
     // is at (px + 0.5, py + 0.5), its corners at whole numbers.
     glm::dvec2 toView(double px, double py) const;
+    // The other way: the continuous image coordinates of view point `v`.
+    glm::dvec2 toImage(const glm::dvec2& v) const;
     // The view rectangle that image pixels [x0, x1] x [y0, y1] (inclusive) cover.
     ViewRect pixelsToView(int x0, int y0, int x1, int y1) const;
     ViewRect pixelsToView(const PixelRect& r) const { return pixelsToView(r.x0, r.y0, r.x1, r.y1); }

@@ -3,6 +3,14 @@
 // Design"), told apart with every common colour-vision deficiency, and a few
 // greys. A family's overlay picks swatches by name, so a colour reads the same
 // in every family's overlay and legend.
+//
+// One meaning per colour: the comments below say what each swatch means
+// wherever it is used; a family keys the hues left to it (orange, bluish green,
+// reddish purple) in its own legend, one meaning each within its view, and
+// draws its legend's swatch with the paint its overlay uses. Vermillion is the
+// false culls' alone (the object state and the timeline's marks): no overlay
+// draws it (tests/ui/palette_audit_test.cpp), so a vermillion shape on the
+// screen is always a culling bug.
 #pragma once
 #include <cstdint>
 
@@ -14,19 +22,19 @@ struct Rgb {
 };
 
 enum class Swatch : uint8_t {
-    Blue,        // Okabe-Ito blue: visible objects
-    SkyBlue,     // hidden objects (in the PVS, not seen); picked things
-    Vermillion,     // false culls
-    Yellow,      // the culling camera
-    Orange,
-    BluishGreen,
-    ReddishPurple,
-    NearBlack,  // opaque things (an occluder matrix)
-    LightGrey,  // veils (occluded regions)
-    Grey,       // states not yet known (outdated cells)
-    LineGrey,   // grid lines
-    DimGrey,    // culled objects, which recede
-    White,
+    Blue,           // visible objects (the object states)
+    SkyBlue,        // hidden objects (in the PVS, not seen); in overlays, picked things (rgvc's occluder)
+    Vermillion,     // false culls, and nothing else: never in an overlay
+    Yellow,         // the culling camera: its frustum, line of sight (and rgvc's seeds on it), what it sees of a box
+    Orange,         // a family's own, keyed in its legend (rgvc I, lazy partially free, TBVs half-way, ...)
+    BluishGreen,    // a family's own, keyed in its legend (rgvc traversal, free cells, visible nodes, ...)
+    ReddishPurple,  // a family's own, keyed in its legend (rgvc T, full cells, expiring TBVs, ...)
+    NearBlack,      // opaque things (an occluder matrix), dark backings
+    LightGrey,      // veils (occluded regions)
+    Grey,           // states not yet known (outdated cells, nodes not reached); rgvc's static Os
+    LineGrey,       // grid lines, frames
+    DimGrey,        // culled objects and outside the frustum, which recede
+    White,          // under the pointer (rgvc's voxel, the lazy grid's cell and its focused test); bsp and hzb: found hidden
     Count
 };
 constexpr int kSwatchCount = int(Swatch::Count);

@@ -14,7 +14,7 @@ namespace {
 // The view state the command line can set.
 struct BspOqViewFlags {
     // States shown, a bit each (bit k: BspNodeState k); the default is the
-    // view state's.
+    // view state's, the first overlay preset's.
     int show_nodes = bspNodeMask(BspOqViewState{});
     int show_queries = 1;
     int batch = -1;   // -1: every batch
@@ -78,11 +78,13 @@ NodeKey keyOf(const BspOqSnapshot& s, BspNodeRef ref) {
 class BspOqFamilyView final : public FamilyView {
 public:
     bool applyFlags(const KnobValues& flags, const Scene& scene, std::string& error) override {
+        // The toggles' flags override the preset's toggles only when given.
         const BspOqViewFlags f = bspOqViewFlags().read(flags);
-        setBspNodeMask(view_, f.show_nodes);
-        view_.show_queries = f.show_queries != 0;
+        if (flags.has("bsp-show-nodes")) setBspNodeMask(view_, f.show_nodes);
+        if (flags.has("bsp-show-queries")) view_.show_queries = f.show_queries != 0;
         view_.batch = f.batch;
         pinned_node_ = {-1, f.node};
+        pinned_ = -1;  // not given: none (a lesson's steps set the flags one after another)
         if (f.object < 0) return true;
         pinned_ = scene.indexOf(f.object);
         if (pinned_ >= 0) return true;
@@ -90,6 +92,9 @@ public:
             "--bsp-object " + std::to_string(f.object) + ": the scene has no object with that id";
         return false;
     }
+
+    std::vector<OverlayPreset> overlayPresets() const override { return bspOqOverlayPresets(); }
+    void applyOverlayPreset(OverlayPreset preset) override { bspOqApplyPreset(view_, preset); }
 
     void sceneChanged() override {  // indices into the old scene
         pinned_ = -1;
@@ -152,7 +157,7 @@ private:
         return hovered.valid() ? hovered : resolve(bsp, pinned_node_);
     }
 
-    BspOqViewState view_;
+    BspOqViewState view_;  // the first preset's (bspOqOverlayPresets)
     int pinned_ = -1;  // object index picked by a click or --bsp-object
     NodeKey pinned_node_, hovered_node_;
 };

@@ -72,6 +72,32 @@ Swatch bspQuerySwatch(bool visible) {
     return bspNodeStateSwatch(visible ? BspNodeState::QueriedVisible : BspNodeState::QueriedHidden);
 }
 
+std::vector<OverlayPreset> bspOqOverlayPresets() {
+    return {OverlayPreset::Occlusion, OverlayPreset::Traversal, OverlayPreset::All};
+}
+
+void bspOqApplyPreset(BspOqViewState& view, OverlayPreset preset) {
+    constexpr int kEvery = (1 << kBspNodeStateCount) - 1;
+    switch (preset) {
+        case OverlayPreset::Occlusion: {
+            const BspOqViewState occlusion;
+            setBspNodeMask(view, bspNodeMask(occlusion));
+            view.show_queries = true;
+            break;
+        }
+        case OverlayPreset::Traversal:
+            setBspNodeMask(view, kEvery & ~(1 << int(BspNodeState::NotReached)));
+            view.show_queries = false;
+            break;
+        case OverlayPreset::All:
+            setBspNodeMask(view, kEvery);
+            view.show_queries = true;
+            break;
+        case OverlayPreset::Tbvs:  // not offered: the toggles stay
+            break;
+    }
+}
+
 int bspNodeMask(const BspOqViewState& view) {
     int mask = 0;
     for (int k = 0; k < kBspNodeStateCount; ++k) mask |= view.show_nodes[k] ? 1 << k : 0;

@@ -10,18 +10,20 @@
 // (blue, sky blue, vermillion, dim grey) and the camera (yellow) leave free,
 // and greys; a node state's colour is its query rectangle's colour too, so a
 // rectangle and the box it was drawn from read alike:
-//   queried hidden white (white means occluded in every family's view),
+//   queried hidden white (as the hzb view's Z-culled nodes; ui/palette.h),
 //   queried visible bluish green, assumed visible (coherence) orange,
 //   viewer inside reddish purple, in the frustum (bsp-vfc) light grey,
 //   outside the frustum dim grey (as in every family's view),
 //   not reached grey (not known), empty line grey.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "culling/bsp_oq/bsp_oq_options.h"
 #include "culling/bsp_oq/bsp_oq_snapshot.h"
+#include "ui/overlay_preset.h"
 #include "ui/palette.h"
 
 namespace gridcull {
@@ -39,6 +41,7 @@ Swatch bspQuerySwatch(bool visible);
 // readable and a draw stays cheap.
 constexpr int kBspMaxNodesDrawn = 1500;
 
+// The "occlusion only" preset's, the first (bspOqOverlayPresets).
 struct BspOqViewState {
     // By BspNodeState: the states that say what a query decided or saved are on;
     // not reached, outside the frustum and empty (the clutter) are off.
@@ -49,6 +52,15 @@ struct BspOqViewState {
     bool shown(BspNodeState s) const { return show_nodes[int(s)]; }
     bool batchShown(int b) const { return batch < 0 || batch == b; }
 };
+
+// The overlay presets, the first the one a view starts with: "occlusion only"
+// (the query rectangles by answer, and the nodes in the states that say what a
+// query decided, or why none was needed: coherence, the eye inside, bsp-vfc's
+// untested), "traversal" (every node the traversal took up, by state, outside
+// the frustum and empty ones included, no rectangles) and "all". No TBVs: the
+// family has none. The batch shown stays as picked.
+std::vector<OverlayPreset> bspOqOverlayPresets();
+void bspOqApplyPreset(BspOqViewState& view, OverlayPreset preset);
 
 // The node states as a bit mask (bit k: BspNodeState k), and back: what
 // --bsp-show-nodes reads.

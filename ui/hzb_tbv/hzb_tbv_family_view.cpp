@@ -12,12 +12,12 @@ namespace gridcull {
 
 namespace {
 
-// The view state the command line can set.
+// The view state the command line can set; -1: the overlay preset's.
 struct HzbTbvViewFlags {
-    int show_tbvs = 1;
+    int show_tbvs = -1;
     // Outcomes shown, a bit each: 1 frustum-culled, 2 Z-culled, 4 entered.
-    int show_nodes = 6;
-    int show_pyramid = 1;
+    int show_nodes = -1;
+    int show_pyramid = -1;
     int pyramid_level = -1;  // -1: auto
     int object = -1;         // scene id of the picked object; -1: none
 };
@@ -29,16 +29,19 @@ constexpr int kMaxPyramidLevel = 31;
 
 const KnobTable<HzbTbvViewFlags>& hzbTbvViewFlags() {
     static const KnobTable<HzbTbvViewFlags> table{
-        knob("hzb-show-tbvs", &HzbTbvViewFlags::show_tbvs, 0, 1,
-             "1 draws each hidden dynamic object's TBV as a wire box, coloured by the part of "
-             "its validity period left; 0 hides them"),
-        knob("hzb-show-nodes", &HzbTbvViewFlags::show_nodes, 0, 7,
-             "the octree nodes the traversal reached drawn as wire boxes, by outcome, a bit "
-             "each: 1 frustum-culled, 2 Z-culled (hidden by the Z-pyramid), 4 entered; 0 none, "
-             "7 all (at most 1500 boxes, front to back)"),
-        knob("hzb-show-pyramid", &HzbTbvViewFlags::show_pyramid, 0, 1,
-             "1 shows Z-pyramid levels as grey images in the view's corner (near light, far "
-             "dark, empty black); 0 hides them"),
+        derivedKnob("hzb-show-tbvs", &HzbTbvViewFlags::show_tbvs, 0, 1, "preset",
+                    "the overlay preset's",
+                    "1 draws each hidden dynamic object's TBV as a wire box, coloured by the "
+                    "part of its validity period left; 0 hides them"),
+        derivedKnob("hzb-show-nodes", &HzbTbvViewFlags::show_nodes, 0, 7, "preset",
+                    "the overlay preset's",
+                    "the octree nodes the traversal reached drawn as wire boxes, by outcome, a "
+                    "bit each: 1 frustum-culled, 2 Z-culled (hidden by the Z-pyramid), 4 "
+                    "entered; 0 none, 7 all (at most 1500 boxes, front to back)"),
+        derivedKnob("hzb-show-pyramid", &HzbTbvViewFlags::show_pyramid, 0, 1, "preset",
+                    "the overlay preset's",
+                    "1 shows Z-pyramid levels as grey images in the view's corner (near light, "
+                    "far dark, empty black); 0 hides them"),
         derivedKnob("hzb-pyramid-level", &HzbTbvViewFlags::pyramid_level, 0, kMaxPyramidLevel,
                     "auto", "the finest level at most 64 texels wide",
                     "the finest Z-pyramid level shown (0 is the z-buffer; levels over 256 "
@@ -53,13 +56,18 @@ const KnobTable<HzbTbvViewFlags>& hzbTbvViewFlags() {
 
 class HzbTbvFamilyView final : public FamilyView {
 public:
+    HzbTbvFamilyView() { hzbTbvApplyPreset(view_, hzbTbvOverlayPresets().front()); }
+
     bool applyFlags(const KnobValues& flags, const Scene& scene, std::string& error) override {
+        // The toggles' flags override the preset's toggles only when given.
         const HzbTbvViewFlags f = hzbTbvViewFlags().read(flags);
-        view_.show_tbvs = f.show_tbvs != 0;
-        for (int k = 0; k < kHzbNodeOutcomeCount; ++k)
-            view_.show_nodes[k] = (f.show_nodes >> k) & 1;
-        view_.show_pyramid = f.show_pyramid != 0;
+        if (f.show_tbvs >= 0) view_.show_tbvs = f.show_tbvs != 0;
+        if (f.show_nodes >= 0)
+            for (int k = 0; k < kHzbNodeOutcomeCount; ++k)
+                view_.show_nodes[k] = (f.show_nodes >> k) & 1;
+        if (f.show_pyramid >= 0) view_.show_pyramid = f.show_pyramid != 0;
         view_.pyramid_level = f.pyramid_level;
+        pinned_ = -1;  // not given: none (a lesson's steps set the flags one after another)
         if (f.object < 0) return true;
         pinned_ = scene.indexOf(f.object);
         if (pinned_ >= 0) return true;
@@ -67,6 +75,9 @@ public:
             "--hzb-object " + std::to_string(f.object) + ": the scene has no object with that id";
         return false;
     }
+
+    std::vector<OverlayPreset> overlayPresets() const override { return hzbTbvOverlayPresets(); }
+    void applyOverlayPreset(OverlayPreset preset) override { hzbTbvApplyPreset(view_, preset); }
 
     void sceneChanged() override { pinned_ = -1; }  // an index into the old scene
 

@@ -106,6 +106,22 @@ const char* hzbObjectStatusMeaning(HzbObjectStatus status) {
     return "";
 }
 
+std::vector<OverlayPreset> hzbTbvOverlayPresets() {
+    return {OverlayPreset::Occlusion, OverlayPreset::Traversal, OverlayPreset::Tbvs,
+            OverlayPreset::All};
+}
+
+void hzbTbvApplyPreset(HzbTbvViewState& view, OverlayPreset preset) {
+    const bool all = preset == OverlayPreset::All;
+    const bool traversal = all || preset == OverlayPreset::Traversal;
+    view.show_tbvs = all || preset == OverlayPreset::Tbvs;
+    view.show_pyramid = all || preset == OverlayPreset::Occlusion;
+    for (int o = 0; o < kHzbNodeOutcomeCount; ++o) view.show_nodes[o] = traversal;
+    // The nodes the pyramid hid are its answers: occlusion shows them too.
+    if (preset == OverlayPreset::Occlusion)
+        view.show_nodes[int(HzbNodeOutcome::ZCulled)] = true;
+}
+
 int hzbFirstPyramidImage(const HzbTbvSnapshot& snapshot, const HzbTbvViewState& view) {
     const std::vector<HzbPyramidLevel>& levels = snapshot.pyramid_levels;
     if (levels.empty()) return -1;

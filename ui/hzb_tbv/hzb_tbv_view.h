@@ -16,7 +16,10 @@
 #pragma once
 #include <cstdint>
 
+#include <vector>
+
 #include "culling/hzb_tbv/hzb_tbv_snapshot.h"
+#include "ui/overlay_preset.h"
 #include "ui/palette.h"
 
 namespace gridcull {
@@ -52,6 +55,8 @@ constexpr int kHzbMaxNodesDrawn = 1500;
 constexpr int kHzbPyramidImages = 3;
 constexpr int kHzbAutoPyramidSide = 64;
 
+// The "all" preset but frustum-culled nodes; a family view starts with its
+// first preset instead (hzbTbvOverlayPresets).
 struct HzbTbvViewState {
     bool show_tbvs = true;
     // By HzbNodeOutcome: frustum-culled nodes off (the clutter outside the view).
@@ -61,6 +66,14 @@ struct HzbTbvViewState {
 
     bool shown(HzbNodeOutcome o) const { return show_nodes[int(o)]; }
 };
+
+// The overlay presets, the first the one a view starts with: "occlusion only"
+// (the Z-pyramid's levels and the octree nodes it hid), "traversal" (the
+// octree nodes the front-to-back traversal took up, by outcome, frustum-culled
+// ones included), "TBVs" (the hidden objects' TBVs by validity left) and
+// "all". The pyramid level shown stays as picked.
+std::vector<OverlayPreset> hzbTbvOverlayPresets();
+void hzbTbvApplyPreset(HzbTbvViewState& view, OverlayPreset preset);
 
 // The index in snapshot.pyramid_levels of the first level shown: the captured
 // level nearest the picked one (a level finer than any captured one gives the

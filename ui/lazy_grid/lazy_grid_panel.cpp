@@ -170,7 +170,7 @@ void drawLazyGridPanel(const LazyGridSnapshot& lazy, const LazyGridPanelInput& i
     cellStates(lazy);
     focusedObject(input, lazy);
     if (input.view_mode != ViewMode::CullingCamera)
-        ImGui::TextDisabled("overlay: in the \"culling camera\" view");
+        ImGui::TextDisabled("overlay: its cells also drawn in the frustum");
     for (int l = 0; l < kLazyGridLayerCount; ++l) layerToggle(LazyGridLayer(l), view);
 }
 

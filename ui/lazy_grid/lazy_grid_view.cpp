@@ -186,6 +186,30 @@ Swatch lazyFreeTouchSwatch() {
     return kBluishGreen;
 }
 
+std::vector<OverlayPreset> lazyGridOverlayPresets() {
+    return {OverlayPreset::Occlusion, OverlayPreset::Traversal, OverlayPreset::All};
+}
+
+void lazyGridApplyPreset(LazyGridViewState& view, OverlayPreset preset) {
+    using L = LazyGridLayer;
+    const auto set = [&](auto&& on) {
+        for (int l = 0; l < kLazyGridLayerCount; ++l) view.show[l] = on(L(l));
+    };
+    switch (preset) {
+        case OverlayPreset::Occlusion:
+            set([](L l) { return l == L::Cells || l == L::GridLines; });
+            break;
+        case OverlayPreset::Traversal:
+            set([](L l) { return l != L::Cells; });
+            break;
+        case OverlayPreset::All:
+            set([](L) { return true; });
+            break;
+        case OverlayPreset::Tbvs:  // not offered: the toggles stay
+            break;
+    }
+}
+
 LazyDecision describeLazyDecision(const LazyGridSnapshot& snapshot, int object_index) {
     LazyDecision d;
     d.test = decidingTest(snapshot, object_index);

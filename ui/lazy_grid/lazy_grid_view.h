@@ -11,7 +11,10 @@
 #pragma once
 #include <cstdint>
 
+#include <vector>
+
 #include "culling/lazy_grid/lazy_grid_snapshot.h"
+#include "ui/overlay_preset.h"
 #include "ui/palette.h"
 
 namespace gridcull {
@@ -70,9 +73,18 @@ Swatch lazyGridLayerSwatch(LazyGridLayer layer);
 Swatch lazyFreeTouchSwatch();
 
 struct LazyGridViewState {
+    // The "all" preset's; a family view starts with its first preset instead.
     bool show[kLazyGridLayerCount] = {true, true, true, true, true};
     bool shown(LazyGridLayer l) const { return show[int(l)]; }
 };
+
+// The overlay presets, the first the one a view starts with: "occlusion only"
+// (the cells by state, what the grid knows of the image, and the grid lines),
+// "traversal" (the focused object's deciding test: the cells it touched, those
+// whose pixels it read, its screen rectangle, over the grid lines) and "all".
+// No TBVs: the lazy grid has none.
+std::vector<OverlayPreset> lazyGridOverlayPresets();
+void lazyGridApplyPreset(LazyGridViewState& view, OverlayPreset preset);
 
 // The focused object's deciding test (decidingTest) summed up for the panel.
 struct LazyDecision {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "culling/rgvc/rgvc_snapshot.h"
+#include "ui/rgvc/rgvc_hovered_voxel.h"
 #include "ui/rgvc/rgvc_object_voxels.h"
 #include "ui/rgvc/rgvc_overlay.h"
 #include "ui/rgvc/rgvc_overlay3d.h"
@@ -21,7 +22,8 @@ struct RgvcViewFlags {
     int slice = -1;      // 3D: the slice shown instead of boxes; -1: boxes
     int slice_axis = 1;  // 3D: 0 x, 1 y, 2 z
     int object = -1;     // the object (scene id) whose voxels the panel lists; -1: none
-    int tbv = -1;        // 1 shows T, 0 hides it; -1: the window's default (2D on, 3D off)
+    int tbv = -1;        // 1 shows T, 0 hides it; -1: the overlay preset decides
+    int static_voxels = -1;  // 3D: 1 shows Os apart from O, 0 folds it in; -1: the preset decides
 };
 
 constexpr int kMaxFlagValue = 100000000;
@@ -44,9 +46,13 @@ const KnobTable<RgvcViewFlags>& rgvcViewFlags() {
                     "none", "none",
                     "pick the object with scene id N, as a click in the window does: the "
                     "panel lists its voxels in I and what the traversal found in each"),
-        derivedKnob("rgvc-tbv", &RgvcViewFlags::tbv, 0, 1, "default", "shown in 2D, hidden in 3D",
+        derivedKnob("rgvc-tbv", &RgvcViewFlags::tbv, 0, 1, "default", "the overlay preset's",
                     "1 shows the TBV matrix T (3D: a voxel where 2 of Txy, Txz and Tyz hold an "
-                    "id), 0 hides it"),
+                    "id), 0 hides it, over the overlay preset's toggles"),
+        derivedKnob("rgvc-static", &RgvcViewFlags::static_voxels, 0, 1, "default",
+                    "the overlay preset's",
+                    "3D: 1 draws the static objects' opaque voxels Os apart from O (grey), 0 "
+                    "draws them as O, over the overlay preset's toggles"),
     };
     return table;
 }
@@ -59,17 +65,30 @@ public:
         view_.layer = f.layer;
         view_.occluder = f.occluder;
         view_.slice_axis = f.slice_axis;
-        if (f.tbv >= 0) view_.show[int(RgvcLayer::Tbv)] = f.tbv == 1;
-        if (f.slice >= 0) {
-            view_.mode = RgvcVoxelMode::Slice;
-            view_.slice_index = f.slice;
-        }
+        tbv_flag_ = f.tbv;
+        static_flag_ = f.static_voxels;
+        applyLayerFlags();
+        // Flags not given take their defaults: a lesson's steps set them again
+        // one after another.
+        view_.mode = f.slice >= 0 ? RgvcVoxelMode::Slice : RgvcVoxelMode::Boxes;
+        if (f.slice >= 0) view_.slice_index = f.slice;
+        pinned_object_ = -1;
         if (f.object < 0) return true;
         pinned_object_ = scene.indexOf(f.object);
         if (pinned_object_ >= 0) return true;
         error =
             "--rgvc-object " + std::to_string(f.object) + ": the scene has no object with that id";
         return false;
+    }
+
+    std::vector<OverlayPreset> overlayPresets() const override { return rgvcOverlayPresets(); }
+
+    void applyOverlayPreset(OverlayPreset preset) override {
+        // The preset asks for T itself: --rgvc-tbv no longer overrides it.
+        preset_ = preset;
+        tbv_flag_ = -1;
+        static_flag_ = -1;
+        if (toggles_for_ != 0) rgvcApplyPreset(view_, preset_, toggles_for_);
     }
 
     void sceneChanged() override {
@@ -146,16 +165,22 @@ public:
         } else if (rgvc->dimensions == 3) {
             const glm::dvec3 eye = rgvcViewEye(overlay.view_projection, rgvc->grid);
             drawRgvcOverlay3d(*rgvc, view_, context.scene->camera.near, eye, draw, scratch3d_);
+        } else {
+            return;
         }
+        // Last, so that its outline lies over the layers' of the same width.
+        if (hovering_) drawRgvcHoveredVoxel(*rgvc, hovered_voxel_, draw);
     }
 
 private:
-    // The toggles start as rgvcDefaultToggles has them for the scene's
-    // dimension, and again when a scene of the other dimension opens.
+    // The toggles are the current preset's for the scene's dimension (Os and
+    // T differ), set again when a scene of the other dimension opens, and
+    // --rgvc-tbv over them until a preset is picked.
     void followDimensions(int dimensions) {
         if (dimensions == toggles_for_) return;
-        rgvcDefaultToggles(view_, dimensions);
+        rgvcApplyPreset(view_, preset_, dimensions);
         toggles_for_ = dimensions;
+        applyLayerFlags();
     }
 
     static const RgvcSnapshot* snapshotOf(const FamilyViewContext& context) {
@@ -165,6 +190,16 @@ private:
     }
 
     RgvcViewState view_;
+    OverlayPreset preset_ = rgvcOverlayPresets().front();
+    // --rgvc-tbv and --rgvc-static over the preset's toggles (for T and Os).
+    void applyLayerFlags() {
+        if (tbv_flag_ >= 0) view_.show[int(RgvcLayer::Tbv)] = tbv_flag_ == 1;
+        if (static_flag_ >= 0 && rgvcLayerApplies(RgvcLayer::StaticOccluder, toggles_for_))
+            view_.show[int(RgvcLayer::StaticOccluder)] = static_flag_ == 1;
+    }
+
+    int tbv_flag_ = -1;      // --rgvc-tbv: 1 shows T, 0 hides it, -1 the preset decides
+    int static_flag_ = -1;   // --rgvc-static: 1 shows Os apart, 0 folds it into O, -1 the preset
     int toggles_for_ = 0;    // the dimension view_'s toggles are set for
     bool hovering_ = false;  // a voxel is under the pointer
     glm::ivec3 hovered_voxel_{0};

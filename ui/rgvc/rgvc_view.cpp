@@ -1,6 +1,7 @@
 #include "ui/rgvc/rgvc_view.h"
 
 #include <algorithm>
+#include <initializer_list>
 
 namespace gridcull {
 
@@ -55,7 +56,7 @@ const char* rgvcLayerMeaning(RgvcLayer layer, int dimensions) {
             case RgvcLayer::CurrentLayer:
                 return "the layer's voxels, shell";
             case RgvcLayer::Seed:
-                return "its seed voxel (white box)";
+                return "its seed voxel (yellow box)";
             case RgvcLayer::LineOfSight:
                 return "line of sight (dashed)";
             case RgvcLayer::PickedOccluder:
@@ -79,7 +80,7 @@ const char* rgvcLayerMeaning(RgvcLayer layer, int dimensions) {
         case RgvcLayer::CurrentLayer:
             return "the current chess layer";
         case RgvcLayer::Seed:
-            return "its seed voxel (white box)";
+            return "its seed voxel (yellow box)";
         case RgvcLayer::LineOfSight:
             return "line of sight (dashed)";
         case RgvcLayer::PickedOccluder:
@@ -105,14 +106,12 @@ Swatch rgvcLayerSwatch(RgvcLayer layer) {
         case RgvcLayer::Visited:
         case RgvcLayer::CurrentLayer:  // the same, solid
             return Swatch::BluishGreen;
-        case RgvcLayer::Seed:
-            return Swatch::White;
+        case RgvcLayer::Seed:  // on the line of sight (the Bresenham line gives it)
         case RgvcLayer::LineOfSight:
-            return Swatch::Yellow;  // the camera's
+            return Swatch::Yellow;  // the culling camera's
         case RgvcLayer::PickedOccluder:
+        case RgvcLayer::Polygon:  // picked things; vermillion is the false culls' alone
             return Swatch::SkyBlue;
-        case RgvcLayer::Polygon:
-            return Swatch::Vermillion;
         case RgvcLayer::StaticOccluder:
             return Swatch::Grey;
     }
@@ -143,10 +142,37 @@ int rgvcOccluderAt(const RgvcSnapshot& snapshot, glm::ivec2 v) {
     return -1;
 }
 
-void rgvcDefaultToggles(RgvcViewState& view, int dimensions) {
-    for (bool& on : view.show) on = true;
-    view.show[int(RgvcLayer::StaticOccluder)] = false;
-    if (dimensions == 3) view.show[int(RgvcLayer::Tbv)] = false;
+std::vector<OverlayPreset> rgvcOverlayPresets() {
+    return {OverlayPreset::Occlusion, OverlayPreset::Traversal, OverlayPreset::Tbvs,
+            OverlayPreset::All};
+}
+
+void rgvcApplyPreset(RgvcViewState& view, OverlayPreset preset, int dimensions) {
+    const auto set = [&](std::initializer_list<RgvcLayer> layers) {
+        for (bool& on : view.show) on = false;
+        for (RgvcLayer l : layers) view.show[int(l)] = true;
+    };
+    using L = RgvcLayer;
+    switch (preset) {
+        case OverlayPreset::Occlusion:
+            // Os folded into O: in 3D its grey boxes would cover O's dark ones.
+            set({L::Occluder, L::Occlusion, L::PickedOccluder, L::Polygon});
+            break;
+        case OverlayPreset::Traversal:
+            set({L::Visited, L::CurrentLayer, L::Seed, L::LineOfSight});
+            // 2D: O under the traversal shows where it met its occluders; 3D
+            // boxes of O would hide the layer's voxels.
+            view.show[int(L::Occluder)] = dimensions == 2;
+            break;
+        case OverlayPreset::Tbvs:
+            set({L::Tbv, L::Identifiers});
+            break;
+        case OverlayPreset::All:
+            for (bool& on : view.show) on = true;
+            break;
+    }
+    for (int l = 0; l < kRgvcLayerCount; ++l)
+        if (!rgvcLayerApplies(RgvcLayer(l), dimensions)) view.show[l] = false;
 }
 
 int rgvcSliceIndex(const RgvcSnapshot& snapshot, const RgvcViewState& view) {

@@ -5,7 +5,10 @@
 // description of one voxel for the panel's "voxel under the mouse"
 // (ui/rgvc/rgvc_voxel_info.h).
 //
-// Colours are swatches of the one palette (ui/palette.h), one per layer; the 3D
+// Colours are swatches of the one palette (ui/palette.h), each with one meaning
+// here: the picked occluder and its polygons sky blue (picked things), the line
+// of sight and the seed voxels on it yellow (the culling camera's), white only
+// for the voxel under the pointer (ui/rgvc/rgvc_hovered_voxel.h). The 3D
 // overlay draws every fill opaque, so what it shows is exactly the legend's
 // swatches (the voxel boxes' frames and the slice's empty voxels are dim grey).
 #pragma once
@@ -16,6 +19,7 @@
 
 #include "culling/rgvc/rgvc_snapshot.h"
 #include "culling/scene/scene.h"
+#include "ui/overlay_preset.h"
 #include "ui/palette.h"
 #include "ui/rgvc/rgvc_voxel_info.h"
 
@@ -63,7 +67,8 @@ inline Paint rgvcLayerPaint(RgvcLayer layer) {
 enum class RgvcVoxelMode : uint8_t { Boxes, Slice };
 
 struct RgvcViewState {
-    // The toggles, as rgvcDefaultToggles sets them for 2D.
+    // The toggles of the "all" preset in 2D; a family view starts with its
+    // first preset instead (rgvcOverlayPresets).
     bool show[kRgvcLayerCount] = {true, true, true, true, true, true,
                                   true, true, true, true, false};
     int64_t layer = -1;  // chess layer shown up to; -1: every layer (the whole traversal)
@@ -78,11 +83,17 @@ struct RgvcViewState {
     bool shown(RgvcLayer l) const { return show[int(l)]; }
 };
 
-// The toggles a view starts with in scenes of `dimensions`: every layer but Os
-// (O then shows every opaque voxel alike); in 3D not T either, whose boxes
-// would wall in everything behind the TBVs of many hidden movers (its toggle
-// brings them, best seen in a slice).
-void rgvcDefaultToggles(RgvcViewState& view, int dimensions);
+// The overlay presets, the first the one a view starts with: "occlusion only"
+// (O, Os in 3D, H, and a picked occluder's extension and polygons, the
+// paper's steps 3 and 4), "traversal" (the chess layers visited, the current
+// one, its seed, the line of sight; 2D also O, where the search found its
+// occluders), "TBVs" (T and the ids in I that TBVs hold back) and "all". The
+// issue they answer: all ten layers at once mix into colours the legend lacks.
+std::vector<OverlayPreset> rgvcOverlayPresets();
+// Sets view.show to `preset` for scenes of `dimensions`. Os applies in 3D only;
+// T is shown in 3D only when a preset asks for it ("TBVs", "all"): its boxes
+// wall in everything behind the TBVs of many hidden movers.
+void rgvcApplyPreset(RgvcViewState& view, OverlayPreset preset, int dimensions);
 
 // The slice's index along view.slice_axis in `snapshot`'s grid (the default and
 // out-of-range values resolved).

@@ -375,10 +375,16 @@ TEST_F(HzbTbvPanelTest, ColumnDrawsHeadlessAndFlagsChooseTheOverlay) {
     OverlayView overlay;
     overlay.width = kViewWidth;
     overlay.height = kViewHeight;
+    // The first preset, occlusion only: the Z-pyramid images and no TBVs; the
+    // TBVs preset brings the picked object's.
+    view->drawOverlay(context_, overlay, batch_);
+    EXPECT_TRUE(lines(DrawSpace::World, kHzbFocusedTbvWidth).empty()) << "no TBVs";
+    EXPECT_FALSE(batch_.layer(DrawSpace::View).fill.empty()) << "the Z-pyramid images";
+    view->applyOverlayPreset(OverlayPreset::Tbvs);
+    batch_.clear();
     view->drawOverlay(context_, overlay, batch_);
     EXPECT_EQ(lines(DrawSpace::World, kHzbFocusedTbvWidth).size(), kBoxVertices)
         << "the picked object's TBV";
-    EXPECT_FALSE(batch_.layer(DrawSpace::View).fill.empty()) << "the Z-pyramid images";
 
     flags.set("hzb-show-tbvs", 0);
     flags.set("hzb-show-nodes", 0);
