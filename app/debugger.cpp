@@ -127,6 +127,7 @@ void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
 }
 
 void Debugger::advancePlayback(double seconds) {
+    sampleFlight(seconds);
     if (lesson_.active()) {
         const LessonPlayer::Tick tick = lesson_.advance(seconds);
         if (tick.step_changed) showLessonStep();
@@ -234,6 +235,7 @@ FrameSnapshot Debugger::snapshot() const {
     s.show_timings = show_timings_;
     s.view_mode = view_mode_;
     s.culling_camera_frozen = session_.cullingCameraFrozen();
+    s.flight = {flight_.recording(), int(flight_.keys().size()), flight_.seconds()};
     s.scene_file = &session_.sceneFile();
     s.scene_errors = &scene_errors_;
     s.scene_choices = &scene_choices_;
@@ -340,6 +342,9 @@ void Debugger::apply(const UiActions& actions) {
     }
     if (algorithm.freeze_culling) session_.setCullingCameraFrozen(*algorithm.freeze_culling);
     if (algorithm.view_mode) setViewMode(*algorithm.view_mode);
+    if (algorithm.flight_record) toggleFlightRecording();
+    if (algorithm.flight_save) saveFlight();
+    if (algorithm.flight_discard) discardFlight();
     if (actions.scene.open) openSceneFile(actions.scene.path);
     if (!actions.family.knobs.empty()) applyKnobs(actions.family.knobs, {});
     if (actions.knobs.apply) applyKnobs(actions.knobs.set, actions.knobs.unset);

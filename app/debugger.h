@@ -18,6 +18,7 @@
 #include "ui/debugger_session.h"
 #include "ui/debugger_ui.h"
 #include "ui/family_view.h"
+#include "ui/flight_recorder.h"
 #include "ui/layout.h"
 #include "ui/lesson_player.h"
 #include "ui/scene_panes.h"
@@ -87,6 +88,15 @@ public:
     void syncCompare(bool wait);
     // Where the scene view's panes are in `layout`.
     ScenePanes panes(const WindowLayout& layout) const;
+
+    // A camera path flown in the window (app/debugger_flight.cpp): recording
+    // starts or stops (recorded while flying, one key per scene time step);
+    // saving writes it into the scene file as the culling camera's path and
+    // reopens the scene, so the culling camera replays it.
+    void toggleFlightRecording();
+    bool saveFlight();
+    void discardFlight() { flight_.discard(); }
+    const FlightRecorder& flight() const { return flight_; }
 
     // Sets the selected family's overlay toggles to one of its presets.
     void applyOverlayPreset(OverlayPreset preset);
@@ -173,6 +183,9 @@ private:
     std::vector<int> differing_;
     std::vector<PaneCaption> pane_captions_;
     LessonPlayer lesson_;
+    FlightRecorder flight_;
+    // Keeps a key of the flight when recording and flying.
+    void sampleFlight(double seconds);
     // The scene the command line's view flags were checked against: a view made
     // later applies them only while that scene is open.
     int flags_scene_generation_ = -1;

@@ -45,6 +45,7 @@ void handleWindowInput(Debugger& debugger, GLFWwindow* window, const WindowLayou
         debugger.apply(actions);
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) debugger.toggleFreeze();
+    if (dimensions3 && ImGui::IsKeyPressed(GLFW_KEY_R, false)) debugger.toggleFlightRecording();
     // A lesson's steps: a presentation clicker sends PageDown / PageUp.
     if (debugger.lesson().active()) {
         const int step = debugger.lesson().stepIndex();

@@ -6,6 +6,33 @@
 
 namespace gridcull {
 
+namespace {
+
+// Record a flight, then save it into the scene file for the culling camera.
+void drawFlightControls(const FrameSnapshot& snapshot, AlgorithmAction& action) {
+    const FlightState& flight = snapshot.flight;
+    if (ImGui::Button(flight.recording ? "Stop flight" : "Record flight"))
+        action.flight_record = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("R: the same. Keeps where you fly every frame time of the scene,\n"
+                          "to save as the culling camera's path");
+    ImGui::SameLine();
+    ImGui::Text("%d keys, %.1f s", flight.keys, flight.seconds);
+    if (flight.keys == 0 || flight.recording) return;
+    const bool has_file = snapshot.scene_file && !snapshot.scene_file->empty();
+    ImGui::BeginDisabled(!has_file);
+    if (ImGui::Button("Save into the scene file")) action.flight_save = true;
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(has_file ? "Replaces camera.path (the old file is kept as FILE~)\n"
+                                     "and reopens the scene: the culling camera flies it"
+                                   : "The built-in scene has no file: open a scene file first");
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) action.flight_discard = true;
+}
+
+}  // namespace
+
 AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
     AlgorithmAction action;
     if (!ImGui::CollapsingHeader("Algorithm and cameras", ImGuiTreeNodeFlags_DefaultOpen))
@@ -60,6 +87,7 @@ AlgorithmAction drawAlgorithmPanel(const FrameSnapshot& snapshot) {
         changed |= ImGui::RadioButton("orbit and culling camera side by side", &mode,
                                       int(ViewMode::Cameras));
         if (changed) action.view_mode = ViewMode(mode);
+        if (snapshot.view_mode == ViewMode::Fly) drawFlightControls(snapshot, action);
         ImGui::TextDisabled(snapshot.view_mode == ViewMode::Fly
                                 ? "WASD/QE move, right-drag look, shift fast"
                                 : "right-drag rotate, wheel zoom");

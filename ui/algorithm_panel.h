@@ -13,6 +13,11 @@ struct AlgorithmAction {
     std::optional<int> compare_algo;     // index into snapshot.algo_names; -1: compare with none
     std::optional<bool> freeze_culling;  // freeze / release the culling camera
     std::optional<ViewMode> view_mode;
+    // Flying: start or stop recording a camera path, save it into the scene
+    // file (the culling camera then replays it), or drop it.
+    bool flight_record = false;
+    bool flight_save = false;
+    bool flight_discard = false;
 };
 
 // Draws into the current ImGui window.

@@ -70,6 +70,13 @@ struct PaneCaption {
 
 class LessonPlayer;
 
+// A camera path being flown (ui/flight_recorder.h), for the cameras panel.
+struct FlightState {
+    bool recording = false;
+    int keys = 0;          // kept so far (0: nothing flown)
+    double seconds = 0.0;  // flown so far
+};
+
 struct FrameSnapshot {
     const Scene* scene = nullptr;
     int frame = 0;
@@ -100,6 +107,7 @@ struct FrameSnapshot {
 
     ViewMode view_mode = ViewMode::Overview;
     bool culling_camera_frozen = false;
+    FlightState flight;
 
     const std::string* scene_file = nullptr;  // "" for the built-in scene
     // Scene files to pick from: those opened in this window, most recent first
