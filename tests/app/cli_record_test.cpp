@@ -3,6 +3,7 @@
 // frame, and bad ranges or an existing folder refused with nothing written.
 // Needs an X display (xvfb-run in the tests).
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -101,6 +102,44 @@ TEST(GifQuantize, FlatColoursExactAtMost256) {
             worst = std::max(worst, std::abs(int(palette[indices[i] * 3 + size_t(c)]) -
                                              int(rgba[i * 4 + size_t(c)])));
     EXPECT_LE(worst, 160);  // 65536 colours into 256: coarse, but each pixel's nearest
+}
+
+}  // namespace
+}  // namespace gridcull::test
+
+namespace gridcull::test {
+namespace {
+
+// A lesson recorded: one PNG per step and per value of a step's animation, the
+// step's last image the very PNG `shot --lesson --step` draws.
+TEST(CliRecord, ALessonIsRecordedStepByStepWithItsAnimation) {
+    const std::string dir = scratchDir() + "/record-lesson";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string lesson = dir + "/lesson.json";
+    std::ofstream(lesson) << R"({"title": "t", "scene": ")" << sourcePath("scenes/walls-2d.json")
+                          << R"(", "steps": [
+        {"title": "one", "caption": "The first step.", "section": "none", "algo": "rgvc",
+         "frame": 4, "overlays": "traversal",
+         "animate": {"flag": "rgvc-layer", "from": 1, "to": 3, "seconds_per_value": 0.1}},
+        {"title": "two", "caption": "The second step.", "section": "none", "frame": 6,
+         "compare": "vfc"}]})";
+    const std::string out = dir + "/frames";
+    CommandResult r = runGridcull("record --lesson '" + lesson + "' --out '" + out + "'" + kSize);
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* name : {"step-001-0000.png", "step-001-0001.png", "step-001-0002.png",
+                             "step-002-0000.png"})
+        EXPECT_TRUE(std::filesystem::exists(out + "/" + name)) << name;
+    EXPECT_FALSE(std::filesystem::exists(out + "/step-001-0003.png")) << "values 1, 2, 3 only";
+    const std::string shot = dir + "/step1.png";
+    r = runGridcull("shot --lesson '" + lesson + "' --step 1 --out '" + shot + "'" + kSize);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(readWholeFile(out + "/step-001-0002.png"), readWholeFile(shot));
+    EXPECT_NE(readWholeFile(out + "/step-001-0000.png"), readWholeFile(shot))
+        << "the animation's first value differs from its last";
+    // --from with a lesson is refused.
+    r = runGridcull("record --lesson '" + lesson + "' --from 2 --out '" + dir + "/x.gif'" + kSize);
+    EXPECT_EQ(r.status, 2);
 }
 
 }  // namespace

@@ -92,13 +92,38 @@ void cellStates(const LazyGridSnapshot& lazy) {
     }
 }
 
+// What decided the test, as a sentence; the paper's name of the step (Fig. 2
+// and 3) in the tooltip, for reading the two side by side.
+const char* decisionSentence(OcclusionStep step) {
+    switch (step) {
+        case OcclusionStep::InternalWithoutPixelQuery:
+            return "A cell wholly inside its box was known to be free, so the box is "
+                   "potentially visible and its objects are drawn; no pixel was read.";
+        case OcclusionStep::BorderWithoutPixelQuery:
+            return "A cell on its box's border was known to be free, so the box is "
+                   "potentially visible and drawn; no pixel was read.";
+        case OcclusionStep::InternalWithPixelQuery:
+            return "An outdated cell inside its box was brought up to date by reading its "
+                   "pixels and found free, so the box is potentially visible and drawn.";
+        case OcclusionStep::BorderWithPixelQuery:
+            return "The pixels of a border cell under its box were read and some were free, "
+                   "so the box is potentially visible and drawn.";
+        case OcclusionStep::Occluded:
+            return "No cell under its box was free: the box is occluded and culled.";
+        case OcclusionStep::OffScreen:
+            return "Its box covers no pixel of the image: culled.";
+    }
+    return "";
+}
+
 void decisionResult(const LazyGridTest& test) {
     if (!test.in_frustum) {
-        ImGui::TextUnformatted("outside the frustum: culled, no cell read");
+        ImGui::TextWrapped("Its box lies outside the view frustum: culled, no cell read.");
         return;
     }
-    ImGui::Text("step: %s", occlusionStepName(test.step));
-    ImGui::TextUnformatted(test.occluded ? "-> occluded: culled" : "-> potentially visible: drawn");
+    ImGui::TextWrapped("%s", decisionSentence(test.step));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the paper's step (Fig. 2 and 3): %s", occlusionStepName(test.step));
 }
 
 // The cell that made a box potentially visible: its last touch, found free.

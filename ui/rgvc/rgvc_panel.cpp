@@ -95,23 +95,32 @@ bool occluderPicker(const RgvcSnapshot& rgvc, RgvcViewState& view) {
     if (changed) view.occluder = value;
     if (value >= 0) {
         const RgvcOccluderView& o = rgvc.occluders[size_t(value)];
-        ImGui::Text("of %d: initial (%d, %d), layer %lld, %d polygon(s)", n, o.occluder.initial.x,
-                    o.occluder.initial.y, (long long)o.layer, o.polygon_count);
+        ImGui::TextWrapped(
+            "Occluder %d of %d grows from voxel (%d, %d), met at chess layer %lld, and casts "
+            "%d occlusion polygon%s.",
+            value, n, o.occluder.initial.x, o.occluder.initial.y, (long long)o.layer,
+            o.polygon_count, o.polygon_count == 1 ? "" : "s");
         const RgvcExtendedOccluder& occ = o.occluder;
-        // Steps 1 to 4 as voxels added; "-" for a step 3 the convex L skipped.
-        char step3[16] = "-";
+        // Steps 1 to 4 as voxels added; a step 3 the convex L skipped says so.
+        const char* shape = occ.isStaircase()                         ? "a staircase of two Ls"
+                            : occ.variant == RgvcExtension::Staircase ? "an L (staircase variant)"
+                                                                      : "a convex L";
+        char step3[48] = "skipped step 3";
         if (occ.steps[2].run) std::snprintf(step3, sizeof step3, "%d", occ.steps[2].count);
-        const char* shape = occ.isStaircase()                         ? "staircase"
-                            : occ.variant == RgvcExtension::Staircase ? "L (staircase variant)"
-                                                                      : "convex L";
-        ImGui::Text("%s, steps %d %d %s %d, marked %lld", shape, occ.steps[0].count,
-                    occ.steps[1].count, step3, occ.steps[3].count, (long long)o.voxels_occluded);
+        ImGui::TextWrapped(
+            "Extended into %s: its four steps added %d, %d, %s and %d voxels, and its "
+            "shadow marked %lld voxels occluded.",
+            shape, occ.steps[0].count, occ.steps[1].count, step3, occ.steps[3].count,
+            (long long)o.voxels_occluded);
         // Each L: its corner and legs (a staircase has two, meeting at the initial voxel).
         for (int i = 0; i < occ.part_count; ++i) {
             const RgvcOccluderL& l = occ.parts[size_t(i)];
-            ImGui::Text("%s corner (%d, %d), legs x %d y %d",
-                        occ.isStaircase() ? (i == 0 ? "L of steps 1-2" : "L of steps 3-4") : "L",
-                        l.corner.x, l.corner.y, l.leg_x, l.leg_y);
+            ImGui::TextWrapped("%s turns at voxel (%d, %d), its legs %d voxels along x and %d "
+                               "along y.",
+                               occ.isStaircase() ? (i == 0 ? "The L of steps 1 and 2"
+                                                           : "The L of steps 3 and 4")
+                                                 : "The L",
+                               l.corner.x, l.corner.y, l.leg_x, l.leg_y);
         }
     }
     return changed;

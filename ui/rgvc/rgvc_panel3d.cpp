@@ -81,15 +81,18 @@ bool drawRgvcOccluderPicker3d(const RgvcSnapshot& s, RgvcViewState& view, const 
     if (changed) view.occluder = value;
     if (value < 0) return changed;
     const RgvcOccluder3d& o = s.occluders3d[size_t(value)];
-    ImGui::Text("of %d: voxel (%d, %d, %d), layer %d", n, o.voxel.x, o.voxel.y, o.voxel.z,
-                int(o.layer));
-    ImGui::Text("its pass covered %lld direction-map cells", (long long)o.cells_covered);
+    ImGui::TextWrapped("Occluder %d of %d is voxel (%d, %d, %d), met at chess layer %d; its "
+                       "pass marked %lld direction-map cells occluded.",
+                       value, n, o.voxel.x, o.voxel.y, o.voxel.z, int(o.layer),
+                       (long long)o.cells_covered);
     if (cap && cap->valid && cap->occluder == value) {
         int outer = 0;
         for (const BitmapLoop& loop : cap->vectorizer.loops()) outer += loop.hole ? 0 : 1;
-        ImGui::Text("cap on %s%s: %lld voxels, %d polygon(s), %d hole(s)",
-                    kFaceSigns[cap->sign > 0 ? 1 : 0], kAxisNames[cap->axis],
-                    (long long)cap->blocking, outer, cap->holes);
+        ImGui::TextWrapped("Its layer's cap, on the %s%s face of the chess cube, joins %lld "
+                           "blocking voxels into %d polygon%s with %d hole%s.",
+                           kFaceSigns[cap->sign > 0 ? 1 : 0], kAxisNames[cap->axis],
+                           (long long)cap->blocking, outer, outer == 1 ? "" : "s", cap->holes,
+                           cap->holes == 1 ? "" : "s");
     }
     return changed;
 }

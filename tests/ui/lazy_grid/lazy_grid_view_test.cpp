@@ -342,6 +342,33 @@ TEST_F(LazyGridPanelTest, ColumnDrawsHeadlessAndAsksForNothing) {
 
 // A click at the right end of the cell-size slider asks, once let go, for the
 // largest cell size; applied to the session it re-runs with that size.
+// The picked object's test is told as a sentence; the paper's name of the step
+// (internalCellIsFreeWithoutPixelquery, ...) only in a tooltip.
+TEST_F(LazyGridPanelTest, TheDecisionIsASentenceNotAnIdentifier) {
+    ASSERT_GE(input_.focus_object, 0);
+    std::string text;
+    for (int frame = 0; frame < 2; ++frame) {
+        ImGui::GetIO().DisplaySize = ImVec2(kPanelWidth, 1200);
+        ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 1200));
+        ImGui::Begin("lazy", nullptr, ImGuiWindowFlags_NoTitleBar);
+        ImGui::LogToClipboard();
+        FamilyAction action;
+        drawLazyGridPanel(*snap_, input_, view_, state_, action);
+        ImGui::LogFinish();
+        text = ImGui::GetClipboardText() ? ImGui::GetClipboardText() : "";
+        ImGui::End();
+        ImGui::Render();
+    }
+    EXPECT_EQ(text.find("Pixelquery"), std::string::npos) << text;
+    EXPECT_EQ(text.find("step:"), std::string::npos) << text;
+    EXPECT_TRUE(text.find("occluded and culled") != std::string::npos ||
+                text.find("potentially visible and") != std::string::npos)
+        << text;
+}
+
 TEST_F(LazyGridPanelTest, CellSizeSliderAsksForANewCellSize) {
     const ImVec2 away(-FLT_MAX, -FLT_MAX);
     panelFrame(away, false);

@@ -15,6 +15,7 @@
 #include "ui/rgvc/rgvc_history.h"
 #include "ui/rgvc/rgvc_object_voxels.h"
 #include "ui/rgvc/rgvc_overlay.h"
+#include "ui/rgvc/rgvc_panel.h"
 #include "ui/rgvc/rgvc_voxel_panel.h"
 
 namespace gridcull {
@@ -221,6 +222,27 @@ TEST_F(RgvcHistoryView2dTest, ACulledObjectListsTheVoxelsThatHidIt) {
     const std::string text = probe.text(draw);
     EXPECT_NE(text.find("occluded by"), std::string::npos) << text;
     EXPECT_TRUE(probe.clickUntil(draw, [&] { return view.occluder == cause; }));
+}
+
+}  // namespace
+}  // namespace gridcull
+
+namespace gridcull {
+namespace {
+
+// The picked occluder is explained in sentences (its growth, its Ls), not in
+// code-like lists of numbers ("steps 0 66 13 2", "legs x 2 y 79").
+TEST_F(RgvcHistoryView2dTest, ThePickedOccluderIsExplainedInSentences) {
+    test::PanelProbe probe;
+    RgvcViewState view;
+    view.occluder = 0;
+    RgvcPanelInput input;
+    const std::string text = probe.text([&] { drawRgvcPanel(*snap_, view, input); });
+    EXPECT_NE(text.find("Occluder 0 of"), std::string::npos) << text;
+    EXPECT_NE(text.find("Extended into"), std::string::npos) << text;
+    EXPECT_NE(text.find("turns at voxel"), std::string::npos) << text;
+    EXPECT_EQ(text.find("legs x"), std::string::npos) << text;
+    EXPECT_EQ(text.find("L, steps"), std::string::npos) << text;
 }
 
 }  // namespace
