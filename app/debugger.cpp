@@ -92,6 +92,7 @@ void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
                              const WindowLayout& layout) {
     hovered_index_ = -1;
     hovered_distance_ = 0.0;
+    hovered_in_compare_ = false;
     ViewPointer pointer;
     const ScenePanes split = panes(layout);
     const ScenePane* over = nullptr;
@@ -102,6 +103,7 @@ void Debugger::updatePointer(double x, double y, bool inside, bool clicked,
         const WindowRect& r = over->rect;
         const Scene& scene = session_.scene();
         const DebuggerSession& session = sessionOf(*over);
+        hovered_in_compare_ = over->compared;
         const ViewMatrices m = view_camera_.matrices(over->mode, session.cullingCamera(),
                                                      double(r.width) / std::max(r.height, 1));
         viewRay(m, x - r.x, y - r.y, r.width, r.height, pointer.origin, pointer.direction);
@@ -229,7 +231,9 @@ FrameSnapshot Debugger::snapshot() const {
     s.history = &session_.history();
     s.timeline = ahead_frames_ > 0 ? &ahead_ : nullptr;
     s.timeline_frames = ahead_frames_;
-    s.hover = describeObject(session_.scene(), hovered_index_, session_.t(), session_.states(),
+    // The object under the pointer as the pane it is in shows it (B's state in B's).
+    const DebuggerSession& hovered = hovered_in_compare_ && compare_ ? *compare_ : session_;
+    s.hover = describeObject(hovered.scene(), hovered_index_, hovered.t(), hovered.states(),
                              hovered_distance_);
     s.draw_ms = last_draw_ms_;
     s.show_timings = show_timings_;
@@ -241,7 +245,7 @@ FrameSnapshot Debugger::snapshot() const {
     s.scene_choices = &scene_choices_;
     s.recent_scene_count = int(recent_scenes_.size());
     s.note = &note_;
-    s.panes = pane_captions_;
+    s.panes = &pane_captions_;
     s.lesson = lesson_.active() ? &lesson_ : nullptr;
     return s;
 }

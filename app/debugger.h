@@ -173,6 +173,7 @@ private:
     FrameHistory ahead_;  // the run computed ahead, copied each frame for the timeline
     int ahead_frames_ = 0;
     int hovered_index_ = -1;
+    bool hovered_in_compare_ = false;  // the pointer is over the compared culler's pane
     double hovered_distance_ = 0.0;
     // One view per family shown so far, by family id, and the selected
     // algorithm's (null for a family without one).

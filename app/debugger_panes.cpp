@@ -95,34 +95,36 @@ void Debugger::applyOverlayPreset(OverlayPreset preset) {
 }
 
 void Debugger::captionPanes(const WindowLayout& layout) {
-    pane_captions_.clear();
     const ScenePanes split = panes(layout);
-    if (split.count < 2) return;
+    // Resized and assigned in place: the strings keep their capacity from
+    // frame to frame.
+    pane_captions_.resize(split.count < 2 ? 0 : size_t(split.count));
     char line[160];
-    for (int k = 0; k < split.count; ++k) {
+    for (size_t k = 0; k < pane_captions_.size(); ++k) {
         const ScenePane& pane = split.pane[k];
-        PaneCaption caption;
+        PaneCaption& caption = pane_captions_[k];
         caption.rect = pane.rect;
-        if (compare_) {
-            const DebuggerSession& session = sessionOf(pane);
-            caption.title = std::string(pane.compared ? "B: " : "A: ") + session.algo();
-            if (session.frame() != session_.frame()) {
-                std::snprintf(line, sizeof line, "catching up: frame %d of %d",
-                              session.frame(), session_.frame());
-            } else {
-                const int exact = int(session.exactResult().pvs.size());
-                std::snprintf(line, sizeof line,
-                              "PVS %zu (exact %d), %zu false culls; %zu in one PVS only",
-                              session.result().pvs.size(), exact, session.falseCulled().size(),
-                              differing_.size());
-            }
-            caption.detail = line;
-        } else {
-            caption.title = pane.mode == ViewMode::CullingCamera
-                                ? "culling camera"
-                                : "observer: right-drag rotates, wheel zooms";
+        if (!compare_) {
+            caption.title.assign(pane.mode == ViewMode::CullingCamera
+                                     ? "culling camera"
+                                     : "observer: right-drag rotates, wheel zooms");
+            caption.detail.clear();
+            continue;
         }
-        pane_captions_.push_back(std::move(caption));
+        const DebuggerSession& session = sessionOf(pane);
+        std::snprintf(line, sizeof line, "%s: %s", pane.compared ? "B" : "A",
+                      session.algo().c_str());
+        caption.title.assign(line);
+        if (session.frame() != session_.frame()) {
+            std::snprintf(line, sizeof line, "catching up: frame %d of %d", session.frame(),
+                          session_.frame());
+        } else {
+            std::snprintf(line, sizeof line,
+                          "PVS %zu (exact %zu), %zu false culls; %zu in one PVS only",
+                          session.result().pvs.size(), session.exactResult().pvs.size(),
+                          session.falseCulled().size(), differing_.size());
+        }
+        caption.detail.assign(line);
     }
 }
 

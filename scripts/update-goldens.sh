@@ -21,6 +21,8 @@ run() {
 }
 
 mkdir -p "$root/screenshots"
+# Paths in a case's flags (a lesson file) are relative to the source tree.
+cd "$root"
 grep -v '^[[:space:]]*#' "$root/tests/screenshots/cases.txt" | grep -v '^[[:space:]]*$' |
 while read -r name scene frame view algo width height extra; do
     echo "screenshots/$name.png: $scene frame $frame, view $view, algo $algo, ${width}x$height $extra"

@@ -32,7 +32,8 @@ void drawPaneCaptions(const FrameSnapshot& snapshot) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const ImGuiStyle& style = ImGui::GetStyle();
     const Rgb text = swatchColor(Swatch::White);
-    for (const PaneCaption& pane : snapshot.panes) {
+    if (!snapshot.panes) return;
+    for (const PaneCaption& pane : *snapshot.panes) {
         const ImVec2 at(float(pane.rect.x) + style.WindowPadding.x,
                         float(pane.rect.y) + style.WindowPadding.y);
         const ImVec2 title = ImGui::CalcTextSize(pane.title.c_str());

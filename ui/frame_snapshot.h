@@ -120,9 +120,9 @@ struct FrameSnapshot {
     // a 2D scene switched the culler from a 3D-only one ("" for nothing).
     const std::string* note = nullptr;
 
-    // The scene view's panes when it is split (A/B, or both cameras); empty
-    // when it is one.
-    std::vector<PaneCaption> panes;
+    // The scene view's panes when it is split (A/B, or both cameras); null or
+    // empty when it is one.
+    const std::vector<PaneCaption>* panes = nullptr;
     // The lesson playing (null: none).
     const LessonPlayer* lesson = nullptr;
 };

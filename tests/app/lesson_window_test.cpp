@@ -55,7 +55,8 @@ protected:
             // Both cullers on the step's frame, the split view captioned.
             ASSERT_NE(debugger.compareSession(), nullptr);
             EXPECT_EQ(debugger.compareSession()->frame(), step.frame);
-            EXPECT_EQ(shown.panes.size(), 2u);
+            ASSERT_NE(shown.panes, nullptr);
+            EXPECT_EQ(shown.panes->size(), 2u);
         }
         EXPECT_EQ(shown.view_mode, step.view) << "step " << index + 1;
         EXPECT_TRUE(shown.scene_errors->empty()) << shown.scene_errors->front();

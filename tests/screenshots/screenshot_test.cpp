@@ -71,7 +71,8 @@ int runShot(const ShotCase& c, const std::string& out_png, std::string& log) {
     namespace fs = std::filesystem;
     const fs::path source(GRIDCULL_SOURCE_DIR);
     const std::string log_path = out_png + ".log";
-    std::string command = std::string("LIBGL_ALWAYS_SOFTWARE=1 ");
+    // From the source tree: paths in a case's flags (a lesson file) are relative to it.
+    std::string command = "cd " + quoted(source.string()) + " && LIBGL_ALWAYS_SOFTWARE=1 ";
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) command += "xvfb-run -a -s '-screen 0 1280x720x24' ";
     command += quoted(c.exe) + " shot " + quoted((source / c.scene).string()) + " --frame " +

@@ -180,14 +180,21 @@ TEST_F(LazyGridPresetsTest, TheCellUnderThePointerIsOutlined) {
         EXPECT_NEAR(b.z, want.x1, 1e-3);
         EXPECT_NEAR(b.w, want.y1, 1e-3);
     }
-    // Off the view, or not through the culling camera: no outline.
+    // Off the view, or not through the culling camera: no outline. From
+    // outside the camera the cells are held up in its frustum (World space),
+    // where the pointer names no cell: nothing in View space at all.
     view_->pointer(context_, ViewPointer{});
     drawn();
     EXPECT_TRUE(
         test::linesOf(batch_, DrawSpace::View, kLazyHoverPaint.swatch, kLazyHoverWidth).empty());
     view_->pointer(context_, pointerAt(1, 1));
     overlay_.through_culling_camera = false;
-    EXPECT_TRUE(drawn().empty());
+    overlay_.culling_camera = session_->cullingCamera();
+    drawn();
+    EXPECT_TRUE(batch_.layer(DrawSpace::View).fill.empty());
+    EXPECT_TRUE(test::linesOf(batch_, DrawSpace::View, kLazyHoverPaint.swatch, kLazyHoverWidth)
+                    .empty());
+    EXPECT_FALSE(batch_.layer(DrawSpace::World).fill.empty()) << "the cells in the frustum";
 }
 
 }  // namespace

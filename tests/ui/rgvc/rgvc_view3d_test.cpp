@@ -415,7 +415,7 @@ TEST_F(RgvcView3dTest, WhyNamesTheOccluderAndAClickOnTheVoxelPicksIt) {
     FamilyAction action;
     const std::string panel_text = probe.text([&] { family->drawPanel(context, action); });
     const glm::ivec3 o = snap_->occluders3d[size_t(cause)].voxel;
-    std::snprintf(name, sizeof name, "voxel (%d, %d, %d), layer", o.x, o.y, o.z);
+    std::snprintf(name, sizeof name, "is voxel (%d, %d, %d), met at chess layer", o.x, o.y, o.z);
     EXPECT_NE(panel_text.find(name), std::string::npos) << panel_text;
     EXPECT_NE(panel_text.find("direction map"), std::string::npos) << "3D memory rows";
 }
