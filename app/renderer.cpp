@@ -64,7 +64,7 @@ constexpr int kSphereSlices[4] = {32, 16, 10, 6};
 constexpr int kSphereStacks[4] = {16, 8, 5, 3};
 constexpr double kSphereLodPixels[4] = {24.0, 10.0, 4.0, 0.0};
 constexpr int kDiscSegments = 40;
-const glm::vec4 kBackground(0.10f, 0.11f, 0.13f, 1.0f);
+const glm::vec4 kBackground = toRgba(viewBackgroundColor());
 // Comparing two cullers, how far objects in both PVS or neither fade towards
 // the background, so the few that differ stand out in their state's colour.
 constexpr float kSameInBothFade = 0.7f;

@@ -9,7 +9,7 @@ namespace gridcull {
 
 namespace {
 
-const glm::vec4 kWorldFill(0.15f, 0.16f, 0.18f, 1.0f);
+const glm::vec4 kWorldFill = toRgba(worldFillColor());
 const glm::vec4 kWorldEdge(0.50f, 0.52f, 0.56f, 1.0f);
 const glm::vec4 kGridLine(0.24f, 0.25f, 0.28f, 1.0f);
 const glm::vec4 kHover(1.0f, 1.0f, 1.0f, 1.0f);

@@ -69,4 +69,12 @@ const char* swatchName(Swatch swatch) {
     return "?";
 }
 
+Rgb viewBackgroundColor() {
+    return {0.10f, 0.11f, 0.13f};
+}
+
+Rgb worldFillColor() {
+    return {0.15f, 0.16f, 0.18f};
+}
+
 }  // namespace gridcull

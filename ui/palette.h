@@ -7,7 +7,9 @@
 // One meaning per colour: the comments below say what each swatch means
 // wherever it is used; a family keys the hues left to it (orange, bluish green,
 // reddish purple) in its own legend, one meaning each within its view, and
-// draws its legend's swatch with the paint its overlay uses. Vermillion is the
+// draws its legend's swatch with the paint its overlay uses, over what the
+// overlay is drawn over (ui/legend_swatch.h; the lazy grid's cell classes by
+// the overlay's own cell code). Vermillion is the
 // false culls' alone (the object state and the timeline's marks): no overlay
 // draws it (tests/ui/palette_audit_test.cpp), so a vermillion shape on the
 // screen is always a culling bug.
@@ -41,6 +43,11 @@ constexpr int kSwatchCount = int(Swatch::Count);
 
 Rgb swatchColor(Swatch swatch);
 const char* swatchName(Swatch swatch);  // "Okabe-Ito blue", ...
+
+// What overlays are drawn over: the scene view's background, and in 2D the
+// world's box filled inside it. Legend swatches are drawn over the same.
+Rgb viewBackgroundColor();
+Rgb worldFillColor();
 
 // A colour as drawn: a swatch and an opacity.
 struct Paint {

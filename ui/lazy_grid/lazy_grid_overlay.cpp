@@ -61,23 +61,12 @@ void drawCells(const LazyGridSnapshot& s, const ImageFrame& frame, DebugDraw& dr
         for (int cx = 0; cx < s.cells_x; ++cx) {
             const LazyGridCell& cell = s.cells[size_t(cy) * size_t(s.cells_x) + size_t(cx)];
             const LazyCellClass c = lazyCellClassOf(cell, s.variant);
-            const Swatch swatch = lazyCellClassSwatch(c);
-            const bool free = c == LazyCellClass::CompletelyFree || c == LazyCellClass::ZfarAtZmax;
             float alpha = lazyCellClassFillAlpha(c);
             if (c == LazyCellClass::ZfarFinite) {
                 const double t = z_hi > z_lo ? (cell.zfar - z_lo) / (z_hi - z_lo) : 0.0;
                 alpha = kNearAlpha + float(t) * (kFarAlpha - kNearAlpha);
             }
-            const ViewRect r = lazyCellInView(frame, s, cx, cy);
-            if (alpha > 0.0f) draw.fillRect(r, {swatch, alpha});
-            const ViewRect edge = inset(r, kClassInset);
-            if (lazyCellClassHatched(c))
-                draw.hatchRect(kView, edge.x0, edge.y0, edge.x1, edge.y1, {swatch, kHatchAlpha},
-                               kThinWidth, kHatchSpacing);
-            // Thin outlines on small cells, which would otherwise be mostly outline.
-            const bool small = std::min(r.x1 - r.x0, r.y1 - r.y0) < kThickOutlineMinCell;
-            draw.outlineRect(edge, {swatch, free ? kFreeEdgeAlpha : kClassEdgeAlpha},
-                             small ? kThinWidth : kThickWidth);
+            drawLazyCell(c, alpha, lazyCellInView(frame, s, cx, cy), draw);
         }
 }
 
@@ -152,6 +141,24 @@ void drawTouched(const LazyGridSnapshot& s, const LazyGridViewState& view, const
 }
 
 }  // namespace
+
+void drawLazyCell(LazyCellClass c, float fill_alpha, const ViewRect& r, DebugDraw& draw) {
+    const Swatch swatch = lazyCellClassSwatch(c);
+    const bool free = c == LazyCellClass::CompletelyFree || c == LazyCellClass::ZfarAtZmax;
+    if (fill_alpha > 0.0f) draw.fillRect(r, {swatch, fill_alpha});
+    const ViewRect edge = inset(r, kClassInset);
+    if (lazyCellClassHatched(c))
+        draw.hatchRect(kView, edge.x0, edge.y0, edge.x1, edge.y1, {swatch, kHatchAlpha}, kThinWidth,
+                       kHatchSpacing);
+    // Thin outlines on small cells, which would otherwise be mostly outline.
+    const bool small = std::min(r.x1 - r.x0, r.y1 - r.y0) < kThickOutlineMinCell;
+    draw.outlineRect(edge, {swatch, free ? kFreeEdgeAlpha : kClassEdgeAlpha},
+                     small ? kThinWidth : kThickWidth);
+}
+
+float lazyCellLegendAlpha(LazyCellClass c) {
+    return c == LazyCellClass::ZfarFinite ? kNearAlpha : lazyCellClassFillAlpha(c);
+}
 
 ViewRect lazyCellInView(const ImageFrame& frame, const LazyGridSnapshot& snapshot, int cx, int cy) {
     return frame.pixelsToView(lazyCellPixels(snapshot, cx, cy));

@@ -32,6 +32,13 @@ struct LazyGridOverlayScratch {
     std::vector<Touched> touched;  // the focused test's cells, first touch order
 };
 
+// One cell of class `c` over view rectangle `r`: its fill at `fill_alpha`,
+// hatching, outline. The overlay draws every cell with it and the panel's key
+// draws its swatches with it (ui/legend_swatch.h), so the two cannot differ.
+void drawLazyCell(LazyCellClass c, float fill_alpha, const ViewRect& r, DebugDraw& draw);
+// The fill the key shows for class `c` (zfar < zmax: the nearest, densest).
+float lazyCellLegendAlpha(LazyCellClass c);
+
 // The view rectangle of cell (cx, cy) of the snapshot's image in `frame`.
 ViewRect lazyCellInView(const ImageFrame& frame, const LazyGridSnapshot& snapshot, int cx, int cy);
 

@@ -6,6 +6,8 @@
 #include <imgui.h>
 
 #include "culling/lazy_grid/lazy_grid_options.h"
+#include "ui/lazy_grid/lazy_grid_overlay.h"
+#include "ui/legend_swatch.h"
 
 namespace gridcull {
 
@@ -86,7 +88,10 @@ void cellStates(const LazyGridSnapshot& lazy) {
     const int n = lazyCellClassesOf(lazy.variant, classes);
     for (int k = 0; k < n; ++k) {
         const LazyCellClass c = classes[k];
-        swatch(lazyCellClassName(c), lazyCellClassSwatch(c), 1.0f);
+        // Drawn by the overlay's own cell code, over the view's background.
+        SwatchDraw key(kSwatchSize.x, viewBackgroundColor());
+        drawLazyCell(c, lazyCellLegendAlpha(c), key.rect(), key);
+        ImGui::SameLine();
         ImGui::Text("%-15s %4lld  %s", lazyCellClassName(c), (long long)counts.of(c),
                     lazyCellClassMeaning(c));
     }

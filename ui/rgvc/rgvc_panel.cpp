@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "ui/legend_swatch.h"
 #include "ui/ui_units.h"
 
 #include "ui/rgvc/rgvc_panel3d.h"
@@ -14,21 +15,18 @@ namespace gridcull {
 
 namespace {
 
-constexpr ImGuiColorEditFlags kSwatchFlags = ImGuiColorEditFlags_NoTooltip |
-                                             ImGuiColorEditFlags_NoDragDrop |
-                                             ImGuiColorEditFlags_AlphaPreview;
-
-// One toggle: checkbox, colour swatch (as drawn, with its opacity), name, meaning.
+// One toggle: checkbox, colour swatch (as the overlay draws it), name, meaning.
 bool layerToggle(RgvcLayer layer, RgvcViewState& view, int dimensions) {
     ImGui::PushID(int(layer));
     bool& on = view.show[int(layer)];
     const bool changed = ImGui::Checkbox("##show", &on);
     ImGui::SameLine();
-    const Rgb c = swatchColor(rgvcLayerSwatch(layer));
-    // 2D: O and H are veils, shown over the world's dark fill as drawn; 3D draws opaque.
-    const float alpha = dimensions == 3 ? 1.0f : std::max(rgvcLayerAlpha(layer), 0.6f);
-    ImGui::ColorButton(rgvcLayerName(layer), ImVec4(c.r, c.g, c.b, alpha), kSwatchFlags,
-                       ImVec2(scaledPixels(13), scaledPixels(13)));
+    // As drawn: 2D fills are veils over the world's fill (O and H among
+    // them), 3D draws every fill opaque over the view.
+    if (dimensions == 3)
+        paintSwatch(scaledPixels(13), viewBackgroundColor(), {rgvcLayerSwatch(layer), 1.0f});
+    else
+        paintSwatch(scaledPixels(13), worldFillColor(), rgvcLayerPaint(layer));
     ImGui::SameLine();
     const char* meaning = rgvcLayerMeaning(layer, dimensions);
     if (on)
