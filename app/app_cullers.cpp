@@ -8,20 +8,6 @@ namespace gridcull {
 
 namespace {
 
-// One hidden window's context for every -gl culler of the process.
-bool ensureGlContext(std::string& error) {
-    static GlWindow* window = nullptr;
-    if (window) return true;
-    auto* made = new GlWindow;  // lives until exit: the cullers' GL objects need it
-    if (!made->create(64, 64, "gridcull bench", false, error)) {
-        delete made;
-        error = "the -gl algorithms need an OpenGL context: " + error;
-        return false;
-    }
-    window = made;
-    return true;
-}
-
 // The registry algorithm of a -gl name, or "".
 std::string glBaseOf(std::string_view name) {
     if (name.size() <= kGlSuffix.size() || name.substr(name.size() - kGlSuffix.size()) != kGlSuffix)
@@ -51,7 +37,10 @@ std::unique_ptr<Culler> makeAppCuller(std::string_view name, const KnobValues& k
                                       std::string& error) {
     const std::string base = glBaseOf(name);
     if (base.empty()) return makeCuller(name, knobs, error);
-    if (!ensureGlContext(error)) return nullptr;
+    if (!ensureHiddenGlContext(error)) {
+        error = "the -gl algorithms need an OpenGL context: " + error;
+        return nullptr;
+    }
     auto target = std::make_unique<GlImageTarget>();
     if (!target->init(error)) return nullptr;
     return makeCuller(base, knobs, error, std::move(target), std::string(name));

@@ -3,6 +3,10 @@
 // algorithms take turns, starting with a different one each frame, so that machine
 // noise falls on all of them alike. Quality (PVS against the exact visible set) is
 // measured in the first run by a separate, untimed oracle.
+//
+// With --draw gl each PVS is also drawn (app/pvs_draw_timer.h) right after its
+// cull, and a `limit` row draws the oracle's visible set: what a perfect
+// culler, free of cost, would leave to draw.
 #include <unistd.h>
 #include <algorithm>
 #include <cmath>
@@ -15,12 +19,16 @@
 #include "app/cli_commands.h"
 #include "app/output_file.h"
 #include "app/progress_bar.h"
+#include "app/pvs_draw_timer.h"
 #include "culling/registry/registry.h"
 #include "culling/scene/object_triangles.h"
 
 namespace gridcull {
 
 namespace {
+
+// The row of bench --draw that draws the exact visible set.
+constexpr const char* kLimitRow = "limit";
 
 int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
     // Both sorted: ids in exact that pvs lacks.
@@ -54,6 +62,21 @@ std::string variantExample() {
     return "";
 }
 
+// Keeps the first run's quality of one frame: PVS size and triangles, counters,
+// and against `exact` (null without quality) its size and the false culls.
+void recordFrame(const Scene& scene, int frame, const FrameResult& result,
+                 const FrameResult* exact, AlgoBench& b) {
+    const size_t f = size_t(frame);
+    b.pvs_size[f] = int(result.pvs.size());
+    for (int id : result.pvs)
+        b.pvs_triangles[f] += trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
+    b.stats[f] = result.stats;
+    if (exact) {
+        b.exact_size[f] = int(exact->pvs.size());
+        b.false_culls[f] = countMissing(exact->pvs, result.pvs);
+    }
+}
+
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
@@ -82,6 +105,24 @@ CLI::App* addBenchCommand(CLI::App& app, BenchCommand& c) {
         cmd->add_option("--csv", c.csv, "also write one row per algorithm and frame to FILE")
             ->type_name("FILE");
     cmd->add_flag("--no-quality", c.no_quality, "skip the exact oracle (pvs only, faster)");
+    cmd->add_option("--draw", c.draw,
+                    "gl: also draw each PVS with the OpenGL renderer from the culling camera\n"
+                    "(offscreen, at the oracle's image size, finished before the clock\n"
+                    "stops) and time cull, draw and frame = cull + draw; adds a row\n"
+                    "`limit` that draws the exact visible set (no cull time). Needs an X\n"
+                    "display: xvfb-run on a headless machine")
+        ->check(CLI::IsMember({"gl"}))
+        ->type_name("gl");
+    cmd->add_option("--baseline", c.baseline,
+                    "the row ratios are taken against: an --algo entry, or limit with\n"
+                    "--draw (default: the first entry)")
+        ->type_name("NAME");
+    cmd->add_option("--query-cost", c.query_cost_us,
+                    "also model each frame as its measured time plus its queries\n"
+                    "(pixel_queries + occlusion_queries) x US microseconds each, a GPU\n"
+                    "round trip's cost, 0 to 1e6: column \"model\"")
+        ->check(CLI::Range(0.0, 1e6).description(""))
+        ->type_name("US");
     cmd->add_option("--seek", c.seek,
                     "time the window's seeks instead: a step forward into each frame F\n"
                     "and a step back into it (R runs each), the frames each replayed, and\n"
@@ -110,18 +151,41 @@ int runBench(const BenchCommand& c) {
             return usageError("bench", c.scene + ": " + error);
     }
     printUnusedNotes("bench", c.knobs, run_algorithms);
-    if (!c.seek.empty()) return runSeekBench(c, scene, algos);
+    if (!c.seek.empty()) {
+        if (!c.draw.empty()) return usageError("bench", "--seek times seeks and draws nothing: drop --draw");
+        return runSeekBench(c, scene, algos);
+    }
+    const bool drawing = !c.draw.empty();
+    if (drawing && c.no_quality)
+        return usageError("bench", "--draw needs the exact oracle for its limit row: drop --no-quality");
+    // The rows: the entries, then the limit when drawing.
+    std::vector<std::string> row_names;
+    for (const AlgoVariant& v : algos) row_names.push_back(v.label);
+    if (drawing) row_names.push_back(kLimitRow);
+    size_t baseline = 0;
+    if (!c.baseline.empty()) {
+        const auto found = std::find(row_names.begin(), row_names.end(), c.baseline);
+        if (found == row_names.end()) {
+            std::string names;
+            for (const std::string& n : row_names) names += (names.empty() ? "" : ", ") + n;
+            return usageError("bench", "--baseline '" + c.baseline + "' is not a row; the rows are " + names);
+        }
+        baseline = size_t(found - row_names.begin());
+    }
 
     std::vector<std::unique_ptr<Culler>> cullers;
-    std::vector<AlgoBench> benches(algos.size());
-    for (size_t i = 0; i < algos.size(); ++i) {
-        cullers.push_back(makeAppCuller(algos[i].name, algos[i].knobs, error));
-        if (!cullers.back()) {
-            std::cerr << "gridcull bench: " << algos[i].label << ": " << error << "\n";
-            return kExitFailure;
+    std::vector<AlgoBench> benches(row_names.size());
+    for (size_t i = 0; i < benches.size(); ++i) {
+        if (i < algos.size()) {
+            cullers.push_back(makeAppCuller(algos[i].name, algos[i].knobs, error));
+            if (!cullers.back()) {
+                std::cerr << "gridcull bench: " << algos[i].label << ": " << error << "\n";
+                return kExitFailure;
+            }
         }
         AlgoBench& b = benches[i];
-        b.algo = algos[i].label;
+        b.algo = row_names[i];
+        if (drawing) b.draw_ms.assign(size_t(n_frames) * size_t(n_runs), 0.0);
         b.pvs_triangles.assign(size_t(n_frames), 0);
         b.ms.assign(size_t(n_frames) * size_t(n_runs), 0.0);
         b.pvs_size.assign(size_t(n_frames), 0);
@@ -138,11 +202,23 @@ int runBench(const BenchCommand& c) {
         }
         oracle->reset(scene);
     }
+    PvsDrawTimer draw_timer;
+    if (drawing && !draw_timer.init(scene, referenceResolution(knobs), error)) {
+        std::cerr << "gridcull bench: --draw gl: " << error << "\n";
+        return kExitFailure;
+    }
+    // The exact visible set of every frame, kept from the first run for the
+    // limit row's draws in the others.
+    std::vector<std::vector<int>> exact_sets(drawing ? size_t(n_frames) : 0);
 
     std::printf("scene: %s (%dD, %zu objects), frames 0..%d, %d runs, algorithms: %s\n",
                 scene.name.c_str(), scene.dimensions, scene.objects.size(), n_frames - 1, n_runs,
                 c.algo.c_str());
     std::printf("options: %s\n", describeKnobs(knobs).c_str());
+    if (drawing)
+        std::printf("draw: OpenGL (%s), %d x %d pixels, the culling camera's view%s\n",
+                    draw_timer.rendererName().c_str(), draw_timer.width(), draw_timer.height(),
+                    scene.dimensions == 2 ? " (2D: the top-down map)" : "");
     std::fflush(stdout);
 
     ProgressBar progress((long long)n_frames * n_runs);
@@ -153,28 +229,33 @@ int runBench(const BenchCommand& c) {
         for (int f = 0; f < n_frames; ++f) {
             const double t = scene.timeOfFrame(f);
             const Camera camera = cameraAt(scene, t);
-            if (run == 0 && quality) oracle->cull(scene, camera, t, exact);
-            for (size_t turn = 0; turn < k; ++turn) {
-                const size_t i = (turn + size_t(f) + size_t(run)) % k;
-                timedCull(*cullers[i], scene, camera, t, result);
+            if (run == 0 && quality) {
+                oracle->cull(scene, camera, t, exact);
+                if (drawing) exact_sets[size_t(f)] = exact.pvs;
+            }
+            const size_t slot = size_t(run) * size_t(n_frames) + size_t(f);
+            for (size_t turn = 0; turn < benches.size(); ++turn) {
+                const size_t i = (turn + size_t(f) + size_t(run)) % benches.size();
                 AlgoBench& b = benches[i];
-                b.ms[size_t(run) * size_t(n_frames) + size_t(f)] = result.stats.cull_ms;
-                if (run != 0) continue;
-                b.pvs_size[size_t(f)] = int(result.pvs.size());
-                for (int id : result.pvs)
-                    b.pvs_triangles[size_t(f)] +=
-                        trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
-                b.stats[size_t(f)] = result.stats;
-                if (quality) {
-                    b.exact_size[size_t(f)] = int(exact.pvs.size());
-                    b.false_culls[size_t(f)] = countMissing(exact.pvs, result.pvs);
+                if (i == k) {  // the limit: the exact set drawn, no cull
+                    b.draw_ms[slot] = draw_timer.draw(scene, camera, t, exact_sets[size_t(f)]);
+                    if (run == 0) {
+                        recordFrame(scene, f, exact, &exact, b);
+                        b.stats[size_t(f)] = CullStats{};  // the oracle's are not the limit's
+                    }
+                    continue;
                 }
+                timedCull(*cullers[i], scene, camera, t, result);
+                b.ms[slot] = result.stats.cull_ms;
+                if (drawing) b.draw_ms[slot] = draw_timer.draw(scene, camera, t, result.pvs);
+                if (run == 0) recordFrame(scene, f, result, quality ? &exact : nullptr, b);
             }
             progress.step();
         }
     }
 
-    std::fputs(formatBenchTable(benches, n_frames, n_runs).c_str(), stdout);
+    std::fputs(formatBenchTable(benches, n_frames, n_runs, baseline, drawing ? int(k) : -1,
+                                    c.query_cost_us).c_str(), stdout);
     if (c.csv_option->count() > 0) {
         OutputFile csv;
         const std::string text = formatBenchCsv(benches, n_frames, n_runs, scene.dt);

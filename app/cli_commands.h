@@ -24,6 +24,9 @@ int runCull(const CullCommand& c);
 
 struct BenchCommand {
     std::string scene, algo, csv, seek;
+    std::string draw;      // --draw gl: draw each PVS and time it
+    std::string baseline;  // --baseline NAME: the row ratios are taken against
+    double query_cost_us = -1.0;  // --query-cost US: the query cost model's column
     long long frames = -1, runs = 5;
     bool no_quality = false;
     KnobOptions knobs;

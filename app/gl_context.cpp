@@ -50,4 +50,19 @@ bool GlWindow::create(int width, int height, const char* title, bool visible,
     return true;
 }
 
+bool ensureHiddenGlContext(std::string& error) {
+    static GlWindow* window = nullptr;
+    if (window) {
+        glfwMakeContextCurrent(window->get());
+        return true;
+    }
+    auto* made = new GlWindow;  // lives until exit: GL objects made in it need it
+    if (!made->create(64, 64, "gridcull", false, error)) {
+        delete made;
+        return false;
+    }
+    window = made;
+    return true;
+}
+
 }  // namespace gridcull

@@ -25,4 +25,10 @@ private:
     bool initialized_ = false;
 };
 
+// One hidden window's context for the whole process (the -gl cullers and
+// bench --draw share it), made current; created on the first call, kept until
+// exit, since GL objects made in it must outlive their owners. False with
+// `error` when no context can be made (no X display: run under xvfb-run).
+bool ensureHiddenGlContext(std::string& error);
+
 }  // namespace gridcull

@@ -246,13 +246,26 @@ Renderer::Instance Renderer::makeInstance(const SceneDrawInput& input, int index
     return instance;
 }
 
+bool Renderer::drawn(const SceneDrawInput& input, int index) const {
+    if (!input.pvs_only) return true;
+    const std::vector<ObjectState>& states = *input.states;
+    if (size_t(index) >= states.size()) return false;
+    return states[size_t(index)] == ObjectState::Visible ||
+           states[size_t(index)] == ObjectState::Hidden;
+}
+
 void Renderer::buildSphereInstances(const SceneDrawInput& input, DrawGroup& group) {
     const ViewMatrices& view = input.view;
     // Pixels per world unit at unit view depth.
     const double pixels = 0.5 * input.viewport.height * view.projection[1][1];
+    // The level of each sphere drawn, and kSphereLods for one not drawn.
     sphere_lod_.resize(group.objects.size());
     for (size_t& count : group.lod_count) count = 0;
     for (size_t k = 0; k < group.objects.size(); ++k) {
+        if (!drawn(input, group.objects[k])) {
+            sphere_lod_[k] = uint8_t(kSphereLods);
+            continue;
+        }
         const SceneObject& object = input.scene->objects[size_t(group.objects[k])];
         const glm::dvec3 c = object.center + input.scene->displacementAt(object, input.t);
         const double depth = glm::dot(c - view.eye, view.forward);
@@ -267,9 +280,12 @@ void Renderer::buildSphereInstances(const SceneDrawInput& input, DrawGroup& grou
     cursor[0] = instances_.size();
     for (int lod = 1; lod < kSphereLods; ++lod)
         cursor[lod] = cursor[lod - 1] + group.lod_count[lod - 1];
-    instances_.resize(instances_.size() + group.objects.size());
+    group.instance_count = 0;
+    for (size_t count : group.lod_count) group.instance_count += count;
+    instances_.resize(instances_.size() + group.instance_count);
     for (size_t k = 0; k < group.objects.size(); ++k)
-        instances_[cursor[sphere_lod_[k]]++] = makeInstance(input, group.objects[k]);
+        if (sphere_lod_[k] < kSphereLods)
+            instances_[cursor[sphere_lod_[k]]++] = makeInstance(input, group.objects[k]);
 }
 
 void Renderer::buildInstances(const SceneDrawInput& input) {
@@ -280,7 +296,9 @@ void Renderer::buildInstances(const SceneDrawInput& input) {
             buildSphereInstances(input, group);
             continue;
         }
-        for (int index : group.objects) instances_.push_back(makeInstance(input, index));
+        for (int index : group.objects)
+            if (drawn(input, index)) instances_.push_back(makeInstance(input, index));
+        group.instance_count = instances_.size() - group.instance_first;
     }
 }
 
@@ -308,7 +326,7 @@ void Renderer::drawObjects(const SceneDrawInput& input) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     for (const DrawGroup& group : groups_) {
-        const GLsizei count = GLsizei(group.objects.size());
+        const GLsizei count = GLsizei(group.instance_count);
         if (count == 0) continue;
         if (group.cull_back_faces)
             glEnable(GL_CULL_FACE);
@@ -367,12 +385,12 @@ double Renderer::draw(const SceneDrawInput& input) {
         for (int i : *input.differing)
             if (i >= 0 && size_t(i) < differs_.size()) differs_[size_t(i)] = 1;
     }
-    drawOverlays(input, true);
+    if (!input.pvs_only) drawOverlays(input, true);
     drawObjects(input);
     // Over the objects, under the overlay (whose panels, a Z-pyramid say, may
     // sit in the bars).
     if (input.through_culling_camera) dimOutsideCullingImage(input);
-    if (input.family && input.family_context) {
+    if (input.family && input.family_context && !input.pvs_only) {
         // Under the outlines of false culls, which must stay findable.
         OverlayView view;
         view.view_projection = input.view.view_projection;
@@ -385,7 +403,7 @@ double Renderer::draw(const SceneDrawInput& input) {
         input.family->drawOverlay(*input.family_context, view, debug_draw_.batch());
         debug_draw_.flush(glm::mat4(input.view.view_projection), r.width, r.height);
     }
-    drawOverlays(input, false);
+    if (!input.pvs_only) drawOverlays(input, false);
 
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);

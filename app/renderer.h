@@ -54,6 +54,9 @@ struct SceneDrawInput {
     // frame as it sees it.
     FamilyView* family = nullptr;
     const FamilyViewContext* family_context = nullptr;
+    // What an application would draw: only the objects in the PVS (state
+    // Visible or Hidden), no overlay, outline or camera (bench --draw).
+    bool pvs_only = false;
 };
 
 class Renderer {
@@ -85,12 +88,14 @@ private:
         bool cull_back_faces = false;
         std::vector<int> objects;  // indices into scene.objects
         size_t instance_first = 0;
+        size_t instance_count = 0;  // this frame: all objects, or those in the PVS
         size_t lod_count[kSphereLods] = {};  // sphere: instances per level, in order
     };
 
     void buildInstances(const SceneDrawInput& input);
     void buildSphereInstances(const SceneDrawInput& input, DrawGroup& group);
     Instance makeInstance(const SceneDrawInput& input, int index) const;
+    bool drawn(const SceneDrawInput& input, int index) const;
     void drawObjects(const SceneDrawInput& input);
     void drawOverlays(const SceneDrawInput& input, bool under_objects);
     void bindInstanceAttributes(size_t first_instance) const;
