@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cstdio>
 
+#include "culling/scene/object_triangles.h"
+
 namespace gridcull {
 
 namespace {
@@ -54,7 +56,41 @@ void frameStatistics(const AlgoBench& bench, RunValue value, int frames, int run
     median = medianOf(medians);
 }
 
+int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
+    int missing = 0;
+    size_t j = 0;
+    for (int id : exact) {
+        while (j < pvs.size() && pvs[j] < id) ++j;
+        if (j == pvs.size() || pvs[j] != id) ++missing;
+    }
+    return missing;
+}
+
 }  // namespace
+
+void recordFrame(const Scene& scene, int frame, const FrameResult& result,
+                 const FrameResult* exact, AlgoBench& b) {
+    const size_t f = size_t(frame);
+    b.pvs_size[f] = int(result.pvs.size());
+    for (int id : result.pvs)
+        b.pvs_triangles[f] += trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
+    b.stats[f] = result.stats;
+    if (exact) {
+        b.exact_size[f] = int(exact->pvs.size());
+        b.false_culls[f] = countMissing(exact->pvs, result.pvs);
+    }
+}
+
+void sizeBench(AlgoBench& b, int frames, int runs, bool drawn) {
+    const size_t n = size_t(frames), slots = n * size_t(runs);
+    b.ms.assign(slots, 0.0);
+    b.draw_ms.assign(drawn ? slots : 0, 0.0);
+    b.pvs_triangles.assign(n, 0);
+    b.pvs_size.assign(n, 0);
+    b.exact_size.assign(n, -1);
+    b.false_culls.assign(n, 0);
+    b.stats.assign(n, CullStats{});
+}
 
 double frameMedianMs(const AlgoBench& bench, int frame, int frames, int runs) {
     return medianOverRuns(bench, cullOf, frame, frames, runs);

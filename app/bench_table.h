@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "culling/api/counters.h"
+#include "culling/api/culler.h"
+#include "culling/scene/scene.h"
 
 namespace gridcull {
 
@@ -53,6 +55,15 @@ struct BenchSummary {
 // measured part keeps this machine's own query cost, which overstates the model
 // by at most queries x that.
 double modelledFrameMs(const BenchSummary& s, bool drawn, double cost_us);
+
+// Keeps the first run's quality of one frame in `b`: the PVS's size, triangles
+// and counters, and against `exact` (null without quality) its size and the
+// false culls (ids exact sees that the PVS lacks; both sorted).
+void recordFrame(const Scene& scene, int frame, const FrameResult& result,
+                 const FrameResult* exact, AlgoBench& b);
+// Sizes b's per-frame tables for `frames` frames and `runs` runs, with draw
+// times when `drawn`.
+void sizeBench(AlgoBench& b, int frames, int runs, bool drawn);
 
 // The median over runs of one frame's cull time.
 double frameMedianMs(const AlgoBench& bench, int frame, int frames, int runs);

@@ -29,11 +29,13 @@ int dispatch(int argc, char** argv) {
     app.add_flag("--version", version, "print the version and exit");
     CullCommand cull;
     BenchCommand bench;
+    TradeCommand trade;
     WindowCommand shot, view;
     RecordCommand record;
     KnobsCommand knobs, counters;
     CLI::App* cull_app = addCullCommand(app, cull);
     CLI::App* bench_app = addBenchCommand(app, bench);
+    CLI::App* trade_app = addTradeCommand(app, trade);
     CLI::App* shot_app = addShotCommand(app, shot);
     CLI::App* view_app = addViewCommand(app, view);
     CLI::App* record_app = addRecordCommand(app, record);
@@ -63,6 +65,7 @@ int dispatch(int argc, char** argv) {
     }
     if (cull_app->parsed()) return runCull(cull);
     if (bench_app->parsed()) return runBench(bench);
+    if (trade_app->parsed()) return runTrade(trade);
     if (shot_app->parsed()) return runShot(shot);
     if (view_app->parsed()) return runView(view);
     if (record_app->parsed()) return runRecord(record);

@@ -30,17 +30,6 @@ namespace {
 // The row of bench --draw that draws the exact visible set.
 constexpr const char* kLimitRow = "limit";
 
-int countMissing(const std::vector<int>& exact, const std::vector<int>& pvs) {
-    // Both sorted: ids in exact that pvs lacks.
-    int missing = 0;
-    size_t j = 0;
-    for (int id : exact) {
-        while (j < pvs.size() && pvs[j] < id) ++j;
-        if (j == pvs.size() || pvs[j] != id) ++missing;
-    }
-    return missing;
-}
-
 // An example of entries with knobs of their own, from the registry: the first
 // family's first knob with a plain default, at a quarter and at twice it.
 std::string variantExample() {
@@ -60,21 +49,6 @@ std::string variantExample() {
         }
     }
     return "";
-}
-
-// Keeps the first run's quality of one frame: PVS size and triangles, counters,
-// and against `exact` (null without quality) its size and the false culls.
-void recordFrame(const Scene& scene, int frame, const FrameResult& result,
-                 const FrameResult* exact, AlgoBench& b) {
-    const size_t f = size_t(frame);
-    b.pvs_size[f] = int(result.pvs.size());
-    for (int id : result.pvs)
-        b.pvs_triangles[f] += trianglesOf(scene.objects[size_t(scene.indexOf(id))]);
-    b.stats[f] = result.stats;
-    if (exact) {
-        b.exact_size[f] = int(exact->pvs.size());
-        b.false_culls[f] = countMissing(exact->pvs, result.pvs);
-    }
 }
 
 }  // namespace
@@ -183,15 +157,8 @@ int runBench(const BenchCommand& c) {
                 return kExitFailure;
             }
         }
-        AlgoBench& b = benches[i];
-        b.algo = row_names[i];
-        if (drawing) b.draw_ms.assign(size_t(n_frames) * size_t(n_runs), 0.0);
-        b.pvs_triangles.assign(size_t(n_frames), 0);
-        b.ms.assign(size_t(n_frames) * size_t(n_runs), 0.0);
-        b.pvs_size.assign(size_t(n_frames), 0);
-        b.exact_size.assign(size_t(n_frames), -1);
-        b.false_culls.assign(size_t(n_frames), 0);
-        b.stats.assign(size_t(n_frames), CullStats{});
+        benches[i].algo = row_names[i];
+        sizeBench(benches[i], n_frames, n_runs, drawing);
     }
     std::unique_ptr<Culler> oracle;
     if (quality) {

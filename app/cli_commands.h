@@ -38,6 +38,15 @@ int runBench(const BenchCommand& c);
 // (app/cli_bench_seek.cpp).
 int runSeekBench(const BenchCommand& c, const Scene& scene, const std::vector<AlgoVariant>& algos);
 
+struct TradeCommand {
+    std::string scene, algo, out, draw;
+    double target = -1.0;  // --target R; < 0: no pick
+    long long frames = -1, runs = 3;
+    KnobOptions knobs;
+};
+CLI::App* addTradeCommand(CLI::App& app, TradeCommand& c);
+int runTrade(const TradeCommand& c);
+
 // `shot` and `view` share the window's options.
 struct WindowCommand {
     std::string scene, algo = defaultAlgorithm(), out, view = "main";

@@ -20,6 +20,19 @@ std::string rangeCell(const Knob& knob) {
     return (knob.kind == KnobKind::Integer ? "integer " : "") + range;
 }
 
+// The values trade sweeps, and the algorithms that read the knob when not all.
+std::string sweepCell(const Knob& knob) {
+    std::string cell;
+    for (double v : knob.sweep) cell += (cell.empty() ? "" : ", ") + knobValueText(knob, v);
+    if (cell.empty()) cell = "not swept";
+    if (!knob.read_by.empty()) {
+        std::string readers;
+        for (const std::string& r : knob.read_by) readers += (readers.empty() ? "" : ", ") + r;
+        cell += " (" + readers + " only)";
+    }
+    return cell;
+}
+
 }  // namespace
 
 CLI::App* addKnobsCommand(CLI::App& app, KnobsCommand& c) {
@@ -34,17 +47,19 @@ CLI::App* addKnobsCommand(CLI::App& app, KnobsCommand& c) {
 
 int runKnobs(const KnobsCommand& c) {
     if (c.markdown) {
-        std::printf("| flag | family | values | default | what it trades |\n");
-        std::printf("| --- | --- | --- | --- | --- |\n");
+        std::printf("| flag | family | values | default | what it trades | trade sweeps |\n");
+        std::printf("| --- | --- | --- | --- | --- | --- |\n");
         for (const FamilyEntry& family : families())
             for (const Knob& knob : family.knobs)
-                std::printf("| `--%s` | %s | %s | %s | %s |\n", knob.flag.c_str(),
+                std::printf("| `--%s` | %s | %s | %s | %s | %s |\n", knob.flag.c_str(),
                             family.title.c_str(), rangeCell(knob).c_str(),
-                            knobDefaultText(knob).c_str(), knob.help.c_str());
+                            knobDefaultText(knob).c_str(), knob.help.c_str(),
+                            sweepCell(knob).c_str());
         for (const FamilyViewEntry& view : familyViews()) {
             const FamilyEntry* family = findFamily(view.family);
             for (const Knob& flag : view.flags)
-                std::printf("| `--%s` (shot, view) | %s | %s | %s | %s |\n", flag.flag.c_str(),
+                std::printf("| `--%s` (shot, view) | %s | %s | %s | %s | not swept |\n",
+                            flag.flag.c_str(),
                             family ? family->title.c_str() : view.family.c_str(),
                             rangeCell(flag).c_str(), knobDefaultText(flag).c_str(),
                             flag.help.c_str());
@@ -55,9 +70,9 @@ int runKnobs(const KnobsCommand& c) {
         if (family.knobs.empty()) continue;
         std::printf("%s:\n", family.title.c_str());
         for (const Knob& knob : family.knobs)
-            std::printf("  --%-20s %s, default %s\n  %22s %s\n", knob.flag.c_str(),
-                        rangeCell(knob).c_str(), knobDefaultText(knob).c_str(), "",
-                        knob.help.c_str());
+            std::printf("  --%-20s %s, default %s\n  %22s %s\n  %22s trade sweeps: %s\n",
+                        knob.flag.c_str(), rangeCell(knob).c_str(), knobDefaultText(knob).c_str(),
+                        "", knob.help.c_str(), "", sweepCell(knob).c_str());
     }
     std::printf("what the window shows (shot, view):\n");
     for (const Knob* flag : allViewFlags())

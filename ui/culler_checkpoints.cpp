@@ -1,19 +1,13 @@
 #include "ui/culler_checkpoints.h"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <cstdlib>
+
+#include "ui/heap_bytes.h"
 
 namespace gridcull {
 
 namespace {
-
-// Bytes allocated: in the arenas, and in chunks big enough to be mapped alone.
-size_t heapInUse() {
-    const struct mallinfo2 info = mallinfo2();
-    return info.uordblks + info.hblkhd;
-}
 
 std::vector<CullerCheckpoint>::const_iterator firstAtOrAfter(
     const std::vector<CullerCheckpoint>& saved, int frame) {
@@ -42,9 +36,9 @@ void CullerCheckpoints::offer(int frame, const Culler& culler) {
         if (at != saved_.end() && at->frame == frame) return;
     }
     // Copied outside the lock: the copy is of the caller's own culler.
-    const size_t before = heapInUse();
+    const size_t before = heapBytesInUse();
     std::unique_ptr<Culler> copy = culler.clone();
-    const size_t after = heapInUse();
+    const size_t after = heapBytesInUse();
     std::lock_guard<std::mutex> lock(mutex_);
     if (!copy) {
         saved_.clear();

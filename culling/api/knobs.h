@@ -34,7 +34,21 @@ struct Knob {
     std::string automatic;          // one word for that marker, e.g. "scene"
     std::string automatic_meaning;  // what it stands for, e.g. "the scene's grid.resolution"
     std::string help;               // what it does, and what turning it up or down costs
+    // The values `gridcull trade` tries, one knob at a time from the defaults
+    // (docs/LIMITS.md lists them): the knob's useful range, in [min, max];
+    // empty: never swept.
+    std::vector<double> sweep;
+    // The algorithms of its family that read it; empty: every one of them.
+    std::vector<std::string> read_by;
 };
+
+// Whether algorithm `name` (of the knob's family) reads `knob`.
+inline bool knobReadBy(const Knob& knob, const std::string& name) {
+    if (knob.read_by.empty()) return true;
+    for (const std::string& reader : knob.read_by)
+        if (reader == name) return true;
+    return false;
+}
 
 // Reads `text` as a value of `knob`: an integer (Integer) or a finite number
 // (Real) within [min, max], nothing else. False with `error` saying what was
@@ -130,6 +144,20 @@ typename KnobTable<Options>::Entry derivedKnob(const char* flag, T Options::*mem
     e.knob.automatic = automatic;
     e.knob.automatic_meaning = meaning;
     return e;
+}
+
+// A knob entry with the values trade sweeps it over (Knob::sweep).
+template <class Entry>
+Entry swept(Entry entry, std::initializer_list<double> values) {
+    entry.knob.sweep = values;
+    return entry;
+}
+
+// A knob entry that only the algorithms `names` of its family read (Knob::read_by).
+template <class Entry>
+Entry readBy(Entry entry, std::initializer_list<const char*> names) {
+    for (const char* name : names) entry.knob.read_by.push_back(name);
+    return entry;
 }
 
 }  // namespace gridcull

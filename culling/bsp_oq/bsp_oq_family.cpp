@@ -10,33 +10,59 @@ namespace gridcull {
 
 const KnobTable<BspOqOptions>& bspOqKnobs() {
     static const KnobTable<BspOqOptions> table{
-        derivedKnob("bsp-res", &BspOqOptions::resolution, kMinBspResolution, kMaxImageResolution,
-                    "oracle", "the --oracle-res value",
-                    "pixels on the long side of the image the culler draws and queries; another "
-                    "value than the oracle's samples other pixel centres, so an object the "
-                    "oracle sees through a gap may be dropped"),
-        knob("bsp-leaf-triangles", &BspOqOptions::leaf_triangles, 1, 1 << 20,
-             "triangles an object's BSP leaf may hold (a mesh with no more gets no tree); "
-             "smaller: more parts, each culled on its own, more queries and split triangles"),
-        knob("bsp-node-objects", &BspOqOptions::node_objects, 1, 1 << 20,
-             "objects a scene-tree node may hold before it is split; smaller: a deeper tree, "
-             "more nodes to query"),
-        knob("bsp-rebuild-delay", &BspOqOptions::rebuild_delay, -1, kMaxBspDelayFrames,
-             "frames before a scene-tree node that moving objects made too full or too empty is "
-             "rebuilt (the lazy reconstruction); -1: never"),
-        knob("bsp-history", &BspOqOptions::history, 0, kMaxBspHistory,
-             "bsp-oq: after a visible answer, a node's query is skipped for as many frames as "
-             "there were visible answers among its last N queries; 0: a query every frame"),
-        knob("bsp-skip-spread", &BspOqOptions::skip_spread, 0, 1,
-             "bsp-oq: 1 lengthens each skip by a pseudo-random 0 to half of itself, so that "
-             "nodes seen together are not all queried again in one frame (a stall); 0: the "
-             "count of visible answers alone"),
-        knob("bsp-batch", &BspOqOptions::batch, 1, kMaxBspBatch,
-             "bsp-oq: queries issued at once (non-overlapping screen rectangles) before their "
-             "answers are read; 1: one at a time"),
-        knob("bsp-shrink-delay", &BspOqOptions::shrink_delay, -1, kMaxBspDelayFrames,
-             "bsp-oq: frames a scene node's contents must stay unchanged before it is queried "
-             "on its objects' box instead of its cell; -1: never shrink (object parts too)"),
+        swept(derivedKnob(
+                  "bsp-res", &BspOqOptions::resolution, kMinBspResolution, kMaxImageResolution,
+                  "oracle", "the --oracle-res value",
+                  "pixels on the long side of the image the culler draws and queries; another "
+                  "value than the oracle's samples other pixel centres, so an object the "
+                  "oracle sees through a gap may be dropped"),
+              {256, 512, 1024, 2048}),
+        swept(knob("bsp-leaf-triangles", &BspOqOptions::leaf_triangles, 1, 1 << 20,
+                   "triangles an object's BSP leaf may hold (a mesh with no more gets no tree); "
+                   "smaller: more parts, each culled on its own, more queries and split triangles"),
+              {64, 256, 1024}),
+        swept(knob("bsp-node-objects", &BspOqOptions::node_objects, 1, 1 << 20,
+                   "objects a scene-tree node may hold before it is split; smaller: a deeper tree, "
+                   "more nodes to query"),
+              {1, 4, 16}),
+        swept(
+            knob(
+                "bsp-rebuild-delay", &BspOqOptions::rebuild_delay, -1, kMaxBspDelayFrames,
+                "frames before a scene-tree node that moving objects made too full or too empty is "
+                "rebuilt (the lazy reconstruction); -1: never"),
+            {-1, 0, 8, 32}),
+        readBy(
+            swept(
+                knob("bsp-history", &BspOqOptions::history, 0, kMaxBspHistory,
+                     "bsp-oq: after a visible answer, a node's query is skipped for as many frames "
+                     "as "
+                     "there were visible answers among its last N queries; 0: a query every frame"),
+                {0, 4, 8, 16}),
+            {"bsp-oq"}),
+        readBy(
+            swept(
+                knob(
+                    "bsp-skip-spread", &BspOqOptions::skip_spread, 0, 1,
+                    "bsp-oq: 1 lengthens each skip by a pseudo-random 0 to half of itself, so that "
+                    "nodes seen together are not all queried again in one frame (a stall); 0: the "
+                    "count of visible answers alone"),
+                {0, 1}),
+            {"bsp-oq"}),
+        readBy(swept(knob("bsp-batch", &BspOqOptions::batch, 1, kMaxBspBatch,
+                          "bsp-oq: queries issued at once (non-overlapping screen rectangles) "
+                          "before their "
+                          "answers are read; 1: one at a time"),
+                     {1, 16, 64, 256}),
+               {"bsp-oq"}),
+        readBy(
+            swept(
+                knob(
+                    "bsp-shrink-delay", &BspOqOptions::shrink_delay, -1, kMaxBspDelayFrames,
+                    "bsp-oq: frames a scene node's contents must stay unchanged before it is "
+                    "queried "
+                    "on its objects' box instead of its cell; -1: never shrink (object parts too)"),
+                {-1, 0, 4, 16}),
+            {"bsp-oq"}),
     };
     return table;
 }

@@ -30,21 +30,26 @@ constexpr Variant kVariants[] = {
 
 const KnobTable<LazyGridOptions>& lazyGridKnobs() {
     static const KnobTable<LazyGridOptions> table{
-        derivedKnob("lazy-res", &LazyGridOptions::resolution, kMinLazyResolution,
-                    kMaxImageResolution, "oracle", "the --oracle-res value",
-                    "pixels on the long side of the grid's image; below the oracle's, an "
-                    "object seen only between its pixel centres may be dropped"),
-        knob(kLazyCellSizeFlag, &LazyGridOptions::cell_size, 1, kMaxLazyCellSize,
-             "cell side in pixels; smaller: more cells to read, fewer pixels per query"),
-        knob("lazy-prob", &LazyGridOptions::probability_threshold, 0.0, 1.0,
-             "section 6: rate a cell free without a pixel query while less than this "
-             "fraction of it was drawn into (0: off); saves queries, culls less"),
-        knob("lazy-border-whole", &LazyGridOptions::border_whole_fraction, 0.0, 1.0,
-             "section 6: query a border cell whole when the box covers more than this "
-             "fraction of it (0: off)"),
-        knob("lazy-large-box", &LazyGridOptions::large_box_fraction, 0.0, 1.0,
-             "section 6: border cells count as internal for a box over this fraction "
-             "of the image (0: off)"),
+        swept(derivedKnob("lazy-res", &LazyGridOptions::resolution, kMinLazyResolution,
+                          kMaxImageResolution, "oracle", "the --oracle-res value",
+                          "pixels on the long side of the grid's image; below the oracle's, an "
+                          "object seen only between its pixel centres may be dropped"),
+              {256, 512, 1024, 2048}),
+        swept(knob(kLazyCellSizeFlag, &LazyGridOptions::cell_size, 1, kMaxLazyCellSize,
+                   "cell side in pixels; smaller: more cells to read, fewer pixels per query"),
+              {8, 16, 32, 64}),
+        swept(knob("lazy-prob", &LazyGridOptions::probability_threshold, 0.0, 1.0,
+                   "section 6: rate a cell free without a pixel query while less than this "
+                   "fraction of it was drawn into (0: off); saves queries, culls less"),
+              {0, 0.25, 0.5, 0.75}),
+        swept(knob("lazy-border-whole", &LazyGridOptions::border_whole_fraction, 0.0, 1.0,
+                   "section 6: query a border cell whole when the box covers more than this "
+                   "fraction of it (0: off)"),
+              {0, 0.5, 0.9}),
+        swept(knob("lazy-large-box", &LazyGridOptions::large_box_fraction, 0.0, 1.0,
+                   "section 6: border cells count as internal for a box over this fraction "
+                   "of the image (0: off)"),
+              {0, 0.25, 0.5}),
     };
     return table;
 }

@@ -1,6 +1,7 @@
 // The family registry (culling/registry/registry.h): the algorithm names, the
 // dimensions each runs on, the knobs and their owners, making cullers by name,
 // and adding a family.
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -77,6 +78,30 @@ TEST(Registry, KnobsAreUniqueAndNamedAfterTheirFamily) {
     }
     EXPECT_EQ(findKnob("grid-res"), nullptr);
     EXPECT_EQ(findKnob("cell-size"), nullptr);
+}
+
+// What trade sweeps: every culler family's knob, over values it accepts, read
+// by algorithms of its own family; the reference's knobs are never swept (they
+// judge every setting).
+TEST(Registry, EveryCullerKnobIsSweptOverValuesItAccepts) {
+    for (const FamilyEntry& family : families()) {
+        for (const Knob& knob : family.knobs) {
+            if (family.reference) {
+                EXPECT_TRUE(knob.sweep.empty()) << knob.flag;
+                continue;
+            }
+            EXPECT_GE(knob.sweep.size(), 2u) << knob.flag;
+            for (double v : knob.sweep) {
+                EXPECT_GE(v, knob.min) << knob.flag;
+                EXPECT_LE(v, knob.max) << knob.flag;
+                if (knob.kind == KnobKind::Integer) EXPECT_EQ(v, std::round(v)) << knob.flag;
+            }
+            for (const std::string& reader : knob.read_by) {
+                const FamilyEntry* owner = familyOfAlgorithm(reader);
+                EXPECT_EQ(owner, &family) << knob.flag << " read by " << reader;
+            }
+        }
+    }
 }
 
 // Every counter of the table is reported by some algorithm of the registry: the

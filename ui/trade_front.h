@@ -16,10 +16,12 @@ namespace gridcull {
 
 struct TradePoint {
     std::string setting;     // "rgvc:rgvc-grid-res=64", say
+    std::string algorithm;   // "rgvc": the curve it belongs to
     double cull_ms = 0.0;    // median per frame
     double cull_p95_ms = 0.0;
     double draw_ms = 0.0;    // median per frame; 0 when the sweep did not draw
     double frame_ms = 0.0;   // median of cull + draw per frame; 0 when not drawn
+    double frame_p95_ms = 0.0;
     double memory_bytes = 0.0;
     double pvs_ratio = 0.0;  // summed PVS over summed exact visible
     int64_t false_culls = 0;

@@ -1,10 +1,10 @@
-// The trade's choice (app/trade_front.h) on synthetic sweeps: the Pareto front
+// The trade's choice (ui/trade_front.h) on synthetic sweeps: the Pareto front
 // of cost against PVS/exact leaves out dominated and false-culling settings,
 // the target picks the cheapest accurate-enough conservative setting, ties go
 // to memory, and a target nothing meets picks nothing.
 #include <gtest/gtest.h>
 
-#include "app/trade_front.h"
+#include "ui/trade_front.h"
 
 namespace gridcull {
 namespace {

@@ -1,4 +1,4 @@
-#include "app/trade_front.h"
+#include "ui/trade_front.h"
 
 #include <algorithm>
 #include <cmath>

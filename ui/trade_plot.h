@@ -1,0 +1,33 @@
+// The trade curve drawn with ImGui: each measured setting a point of cost
+// (x: frame ms when the sweep drew, else cull ms; a log scale when the costs
+// span more than 10x) against PVS/exact (y), one colour per algorithm, each
+// algorithm's Pareto front joined by a line. A setting with a false cull is a
+// cross in the false-cull colour, never on a front. The target PVS/exact is a
+// dashed line and its pick a square; the setting in use is ringed. The window's
+// trade panel and `gridcull trade`'s PNGs draw the same plot.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "ui/trade_front.h"
+
+namespace gridcull {
+
+struct TradePlotInput {
+    const std::vector<TradePoint>* points = nullptr;
+    std::string title;   // over the plot; "" for none
+    double target = 0.0;  // > 0: the target PVS/exact, drawn as a line
+    int chosen = -1;      // the target's pick, an index into points
+    int current = -1;     // the setting in use (the window), an index into points
+};
+
+struct TradePlotResult {
+    int hovered = -1;  // the point under the pointer
+    int clicked = -1;  // the point clicked this frame
+};
+
+// Draws the plot into a width x height box at the cursor of the current ImGui
+// window (a tooltip describes the hovered point). Empty points: a note instead.
+TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float height);
+
+}  // namespace gridcull
