@@ -72,6 +72,12 @@ public:
     // Makes room for meshes of up to `vertices` vertices, so drawMesh never allocates.
     void reserveMeshVertices(size_t vertices) { view_vertices_.reserve(vertices); }
 
+    // Whether draws write object indices (default true). A client that reads
+    // depths only (the software image target) turns them off: no index is
+    // cleared or written, and markVisible must not be called. Takes effect at
+    // the next begin().
+    void setWriteIds(bool write) { write_ids_ = write; }
+
     // Takes the camera for the following draw calls and clears every pixel.
     void begin(const Camera& camera);
 
@@ -183,10 +189,19 @@ private:
     int width_ = 0;
     int height_ = 0;
     std::vector<double> depth_;
-    std::vector<int32_t> index_;   // -1 where nothing was hit
+    std::vector<int32_t> index_;   // -1 where nothing was hit (when write_ids_)
+    bool write_ids_ = true;
     std::vector<uint8_t> parity_;  // per-pixel crossing parity of one closed mesh
     std::vector<double> column_u_;
     std::vector<double> row_v_;
+    // The box slab test's per-frame tables (begin(), forBoxHits): per axis,
+    // whether 1 / dir[a] is constant along a row, along a column, or neither;
+    // the column reciprocals (3 x width) and the columns where one is 1 / 0.
+    enum class AxisMode : uint8_t { Row, Column, Pixel };
+    AxisMode axis_mode_[3] = {AxisMode::Pixel, AxisMode::Pixel, AxisMode::Pixel};
+    std::vector<double> column_inv_;
+    std::vector<uint8_t> column_zero_;
+    bool any_column_zero_ = false;
     std::vector<glm::dvec3> view_vertices_;  // one mesh's vertices in view space
     std::vector<double> tile_far_;           // per tile: its farthest stored depth
     int tiles_x_ = 0;
