@@ -36,6 +36,8 @@ void IdDepthBuffer::resize(int width, int height) {
     row_v_.assign(size_t(height), 0.0);
     column_inv_.assign(3 * size_t(width), 0.0);
     column_zero_.assign(size_t(width), 0);
+    box_col_lo_.assign(size_t(width), 0.0);
+    box_col_hi_.assign(size_t(width), 0.0);
     tiles_x_ = (width + kTile - 1) / kTile;
     tiles_y_ = (height + kTile - 1) / kTile;
     tile_far_.assign(size_t(tiles_x_) * size_t(tiles_y_), 0.0);
@@ -87,13 +89,18 @@ void IdDepthBuffer::refreshTiles() {
         const int row_end = std::min(height_, (ty + 1) * kTile);
         for (int tx = dirty_cols_.lo / kTile; tx <= dirty_cols_.hi / kTile; ++tx) {
             const int col_end = std::min(width_, (tx + 1) * kTile);
+            // Draws only lower depths, so the new farthest is <= the old one: a
+            // row that still reaches the old value ends the scan (an empty pixel
+            // of a tile at +infinity at once).
+            double& tile = tile_far_[size_t(ty) * size_t(tiles_x_) + size_t(tx)];
+            const double old_far = tile;
             double farthest = 0.0;
-            for (int py = ty * kTile; py < row_end; ++py) {
+            for (int py = ty * kTile; py < row_end && farthest < old_far; ++py) {
                 const double* row = depth_.data() + size_t(py) * size_t(width_);
                 for (int px = tx * kTile; px < col_end; ++px)
                     farthest = std::max(farthest, row[px]);
             }
-            tile_far_[size_t(ty) * size_t(tiles_x_) + size_t(tx)] = farthest;
+            tile = farthest;
         }
     }
     dirty_cols_ = dirty_rows_ = ScreenRange{INT_MAX, -1};
@@ -287,6 +294,30 @@ void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange&
         if (axis_mode_[a] == AxisMode::Pixel) pixel_axis = true;
     }
     const bool two_columns = column_count == 2 && !pixel_axis && !any_column_zero_;
+    const int xa = column_axes[0], za = column_axes[1];
+    ScreenRange hit_cols{INT_MAX, -1};  // two_columns: the columns that may hit
+    if (two_columns) {
+        // The column axes' slabs depend on the column alone: one interval per
+        // column, shared by every row of this box.
+        const double* inv_x = column_inv_.data() + size_t(xa) * size_t(width_);
+        const double* inv_z = column_inv_.data() + size_t(za) * size_t(width_);
+        const double x_lo = b_lo[xa], x_hi = b_hi[xa], z_lo = b_lo[za], z_hi = b_hi[za];
+        for (int px = cols.lo; px <= cols.hi; ++px) {
+            const double tx0 = x_lo * inv_x[px], tx1 = x_hi * inv_x[px];
+            const double tz0 = z_lo * inv_z[px], tz1 = z_hi * inv_z[px];
+            const double lo = std::max(std::min(tx0, tx1), std::min(tz0, tz1));
+            const double hi = std::min(std::max(tx0, tx1), std::max(tz0, tz1));
+            box_col_lo_[size_t(px)] = lo;
+            box_col_hi_[size_t(px)] = hi;
+            // A pixel of a column whose interval is empty or wholly behind the
+            // eye misses (lineBox false, or solidEntry false with s1 < 0 < near).
+            if (lo <= hi && hi >= 0.0) {
+                hit_cols.lo = std::min(hit_cols.lo, px);
+                hit_cols.hi = px;
+            }
+        }
+        if (hit_cols.empty()) return;
+    }
     for (int py = rows.lo; py <= rows.hi; ++py) {
         const glm::dvec3 row_dir = forward_ + row_v_[size_t(py)] * up_;
         const double* depth_row = depth_.data() + size_t(py) * size_t(width_);
@@ -300,26 +331,21 @@ void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange&
             row_inv[a] = 1.0 / d;
         }
         if (two_columns && !row_zero) {
-            // The row axis's slab is one interval for the whole row; the column
-            // axes' reciprocals come from the tables. Same products, same
-            // min / max (in another order, which max and min do not see).
-            const int ra = 3 - column_axes[0] - column_axes[1];
+            // The row axis's slab is one interval for the whole row, the column
+            // axes' one per column (above): the pixel's interval is their
+            // intersection. Same products, same min / max as lineBox (in another
+            // order, which max and min do not see).
+            const int ra = 3 - xa - za;
             const double r0 = b_lo[ra] * row_inv[ra], r1 = b_hi[ra] * row_inv[ra];
             const double row_lo = std::min(r0, r1), row_hi = std::max(r0, r1);
             if (row_lo > row_hi) continue;
-            const int xa = column_axes[0], za = column_axes[1];
-            const double* inv_x = column_inv_.data() + size_t(xa) * size_t(width_);
-            const double* inv_z = column_inv_.data() + size_t(za) * size_t(width_);
-            const double x_lo = b_lo[xa], x_hi = b_hi[xa], z_lo = b_lo[za], z_hi = b_hi[za];
+            const double* col_lo = box_col_lo_.data();
+            const double* col_hi = box_col_hi_.data();
             bool stop = false;
-            forTileSegments(py, cols.lo, cols.hi, z_min, [&](int px) {
+            forTileSegments(py, hit_cols.lo, hit_cols.hi, z_min, [&](int px) {
                 if (stop || depth_row[px] <= z_min) return;
-                const double tx0 = x_lo * inv_x[px], tx1 = x_hi * inv_x[px];
-                const double tz0 = z_lo * inv_z[px], tz1 = z_hi * inv_z[px];
-                const double lo =
-                    std::max(std::max(row_lo, std::min(tx0, tx1)), std::min(tz0, tz1));
-                const double hi =
-                    std::min(std::min(row_hi, std::max(tx0, tx1)), std::max(tz0, tz1));
+                const double lo = std::max(row_lo, col_lo[px]);
+                const double hi = std::min(row_hi, col_hi[px]);
                 if (lo > hi) return;
                 double s;
                 if (!solidEntry(lo, hi, near_, far_, s)) return;

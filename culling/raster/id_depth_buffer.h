@@ -202,6 +202,8 @@ private:
     std::vector<double> column_inv_;
     std::vector<uint8_t> column_zero_;
     bool any_column_zero_ = false;
+    // One box's slab interval per column from the column axes (forBoxHits).
+    mutable std::vector<double> box_col_lo_, box_col_hi_;
     std::vector<glm::dvec3> view_vertices_;  // one mesh's vertices in view space
     std::vector<double> tile_far_;           // per tile: its farthest stored depth
     int tiles_x_ = 0;
