@@ -15,6 +15,14 @@
 //
 // Spheres and boxes are intersected exactly (culling/scene/ray_intersect.h); a ray that
 // starts inside one, or whose near-plane point is inside, meets it at depth near.
+// Boxes use lineBox's slab test with its reciprocals 1 / dir[a] taken from
+// per-frame tables where a direction component depends on the row alone
+// (right[a] = 0) or the column alone (up[a] = 0): a level camera (forward.y = 0)
+// has x and z by column and y by row, so a box's x/z slab interval is computed
+// once per column and its y interval once per row, and a pixel only intersects
+// the two. The products and min/max are lineBox's, so every depth is the same
+// double as the plain per-pixel test gives (tests/culling/raster/
+// id_depth_buffer_box_test.cpp, no tolerance); other cameras divide per pixel.
 // Meshes are rasterized triangle by triangle: near-plane clipping, a fill rule
 // that gives a pixel centre on an edge shared by two triangles to exactly one
 // of them (the right and bottom edges own theirs, as the image is shown),
@@ -35,6 +43,8 @@
 // and whole 16 x 16 tiles whose farthest stored depth is (a coarse max-depth
 // buffer refreshed after each draw; a stale tile only errs towards "farther", so
 // the skipping never changes the result). No call allocates; resize() does.
+// A client that reads depths only turns the object ids off (setWriteIds):
+// nothing is then cleared or written in the id buffer.
 #pragma once
 #include <algorithm>
 #include <climits>
