@@ -41,6 +41,7 @@ void IdDepthBuffer::resize(int width, int height) {
     tiles_x_ = (width + kTile - 1) / kTile;
     tiles_y_ = (height + kTile - 1) / kTile;
     tile_far_.assign(size_t(tiles_x_) * size_t(tiles_y_), 0.0);
+    clear_all_ = true;
 }
 
 void IdDepthBuffer::begin(const Camera& camera) {
@@ -75,8 +76,26 @@ void IdDepthBuffer::begin(const Camera& camera) {
             inv[px] = 1.0 / d;
         }
     }
-    std::fill(depth_.begin(), depth_.end(), std::numeric_limits<double>::infinity());
-    if (write_ids_) std::fill(index_.begin(), index_.end(), -1);
+    // Only the pixels written since the last clear hold anything: every write
+    // is followed by refreshTiles(), which adds its rectangle to frame_cols_ x
+    // frame_rows_. The whole buffer after resize() or when ids are turned on.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    if (clear_all_ || (write_ids_ && !ids_cleared_)) {
+        std::fill(depth_.begin(), depth_.end(), kInf);
+        if (write_ids_) std::fill(index_.begin(), index_.end(), -1);
+    } else if (!frame_cols_.empty() && !frame_rows_.empty()) {
+        for (int py = frame_rows_.lo; py <= frame_rows_.hi; ++py) {
+            const size_t row = size_t(py) * size_t(width_);
+            std::fill(depth_.begin() + long(row + size_t(frame_cols_.lo)),
+                      depth_.begin() + long(row + size_t(frame_cols_.hi) + 1), kInf);
+            if (write_ids_)
+                std::fill(index_.begin() + long(row + size_t(frame_cols_.lo)),
+                          index_.begin() + long(row + size_t(frame_cols_.hi) + 1), -1);
+        }
+    }
+    clear_all_ = false;
+    ids_cleared_ = write_ids_;
+    frame_cols_ = frame_rows_ = ScreenRange{INT_MAX, -1};
     std::fill(tile_far_.begin(), tile_far_.end(), std::numeric_limits<double>::infinity());
     dirty_cols_ = dirty_rows_ = last_cols_ = last_rows_ = ScreenRange{INT_MAX, -1};
 }
@@ -85,6 +104,8 @@ void IdDepthBuffer::refreshTiles() {
     last_cols_ = dirty_cols_;
     last_rows_ = dirty_rows_;
     if (dirty_cols_.empty() || dirty_rows_.empty()) return;
+    frame_cols_ = {std::min(frame_cols_.lo, dirty_cols_.lo), std::max(frame_cols_.hi, dirty_cols_.hi)};
+    frame_rows_ = {std::min(frame_rows_.lo, dirty_rows_.lo), std::max(frame_rows_.hi, dirty_rows_.hi)};
     for (int ty = dirty_rows_.lo / kTile; ty <= dirty_rows_.hi / kTile; ++ty) {
         const int row_end = std::min(height_, (ty + 1) * kTile);
         for (int tx = dirty_cols_.lo / kTile; tx <= dirty_cols_.hi / kTile; ++tx) {
@@ -214,10 +235,24 @@ bool IdDepthBuffer::drawSphere(int index, const glm::dvec3& center, double radiu
         int written_lo = INT_MAX, written_hi = -1;
         forTileSegments(py, col_lo, col_hi, z_min, [&](int px) {
             if (depth_row[px] <= z_min) return;
+            // solveSphereQuadratic + solidEntry, term for term, except that the
+            // far root is only computed when the near one is not already the
+            // answer: s1 >= s0 always (root >= 0, a > 0, rounding is monotone),
+            // so s0 >= near > 0 makes solidEntry return s0.
             const double u = column_u[px];
-            double s0, s1, s;
-            if (!solveSphereQuadratic(u * u + row_a, u * c.x + row_b, k, s0, s1)) return;
-            if (!solidEntry(s0, s1, near_, far_, s)) return;
+            const double a = u * u + row_a, b = u * c.x + row_b;
+            if (!(a > 0.0)) return;
+            const double disc = b * b - a * k;
+            if (disc < 0.0) return;
+            const double root = std::sqrt(disc);
+            const double s0 = (b - root) / a;
+            double s;
+            if (s0 >= near_ && s0 > 0.0) {
+                if (!(s0 <= far_)) return;
+                s = s0;
+            } else if (!solidEntry(s0, (b + root) / a, near_, far_, s)) {
+                return;
+            }
             if (s < depth_row[px]) {
                 depth_row[px] = s;
                 if (index_row) index_row[px] = index;

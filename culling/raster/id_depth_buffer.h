@@ -44,7 +44,10 @@
 // buffer refreshed after each draw; a stale tile only errs towards "farther", so
 // the skipping never changes the result). No call allocates; resize() does.
 // A client that reads depths only turns the object ids off (setWriteIds):
-// nothing is then cleared or written in the id buffer.
+// nothing is then cleared or written in the id buffer. begin() clears only the
+// bounding rectangle of what was written since the previous begin(). Spheres
+// compute the far root of their quadratic only when the near one is not already
+// the answer (same depths, bit for bit; tested like boxes).
 #pragma once
 #include <algorithm>
 #include <climits>
@@ -222,6 +225,13 @@ private:
     ScreenRange dirty_rows_{INT_MAX, -1};
     ScreenRange last_cols_{INT_MAX, -1};  // the dirty rectangle of the last draw
     ScreenRange last_rows_{INT_MAX, -1};
+    // Everything written since begin() (the next begin() clears only that), and
+    // whether the next begin() must clear every pixel (after resize(), or ids
+    // turned on after frames that did not clear them).
+    ScreenRange frame_cols_{INT_MAX, -1};
+    ScreenRange frame_rows_{INT_MAX, -1};
+    bool clear_all_ = true;
+    bool ids_cleared_ = false;
 
     glm::dvec3 eye_{0.0}, right_{1, 0, 0}, up_{0, 1, 0}, forward_{0, 0, 1};
     double tan_x_ = 1.0, tan_y_ = 1.0;

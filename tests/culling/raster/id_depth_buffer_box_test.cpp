@@ -184,6 +184,64 @@ TEST(IdDepthBufferBoxFastPath, EveryPixelEqualsThePerPixelSlabTestBitForBit) {
     }
 }
 
+// Spheres likewise: drawSphere's pixel loop skips the far root when the near
+// one is the answer, and must still give the depth solveSphereQuadratic +
+// solidEntry give, bit for bit, in the documented view-space arithmetic.
+double sphereDepth(const Camera& camera, int width, int height, const glm::dvec3& center,
+                   double radius, int px, int py) {
+    glm::dvec3 right, up, forward;
+    camera.basis(right, up, forward);
+    const glm::dvec3 rel = center - camera.position;
+    const glm::dvec3 c{glm::dot(rel, right), glm::dot(rel, up), glm::dot(rel, forward)};
+    const double k = glm::dot(c, c) - radius * radius;
+    if (k <= 0.0) return camera.near;
+    const double tan_y = std::tan(glm::radians(camera.fov_deg) * 0.5);
+    const double tan_x = tan_y * camera.aspect;
+    const double u = (2.0 * (px + 0.5) / width - 1.0) * tan_x;
+    const double v = (1.0 - 2.0 * (py + 0.5) / height) * tan_y;
+    double s0, s1, s;
+    if (!solveSphereQuadratic(u * u + (v * v + 1.0), u * c.x + (v * c.y + c.z), k, s0, s1))
+        return kInf;
+    if (!solidEntry(s0, s1, camera.near, camera.far, s)) return kInf;
+    return s;
+}
+
+TEST(IdDepthBufferSphereDepth, EveryPixelEqualsTheQuadraticBitForBit) {
+    long long pixels = 0, covered = 0;
+    for (uint64_t seed : test::seedsToRun(1, 60)) {
+        test::withSeed(seed, [&] {
+            for (int kind = 0; kind < 3; ++kind) {
+                const BoxView view = randomBoxView(seed * 3 + uint64_t(kind), kind);
+                IdDepthBuffer buffer;
+                buffer.resize(view.width, view.height);
+                for (size_t k = 0; k < view.boxes.size(); ++k) {
+                    const glm::dvec3 center = view.boxes[k].center();
+                    const double radius = view.boxes[k].max.x - center.x;
+                    buffer.begin(view.camera);
+                    buffer.drawSphere(0, center, radius);
+                    int wrong = 0;
+                    for (int py = 0; py < view.height; ++py)
+                        for (int px = 0; px < view.width; ++px) {
+                            const double want = sphereDepth(view.camera, view.width, view.height,
+                                                            center, radius, px, py);
+                            const double got = buffer.depthRow(py)[px];
+                            ++pixels;
+                            if (want < kInf) ++covered;
+                            if (got != want && ++wrong <= 3)
+                                ADD_FAILURE() << kKindName[kind] << " sphere " << k << " pixel ("
+                                              << px << ", " << py << "): drawn " << got
+                                              << ", quadratic " << want;
+                        }
+                }
+            }
+        });
+    }
+    if (!test::singleSeedRun()) {
+        std::printf("[sphere depth] %lld pixels compared, %lld covered\n", pixels, covered);
+        EXPECT_GT(covered, pixels / 20);
+    }
+}
+
 // A draw hidden whole behind what is already drawn (rejected at tile level)
 // reports an empty written rectangle, for boxes, spheres and meshes alike, so
 // the image-space cullers' per-draw updates (lazy grid cells, occlusion bits,
