@@ -65,7 +65,7 @@ namespace {
 
 // The occluded pixels of rows [y0, y1], words [w0, w1], with the first and last
 // word masked. The build has no -march flag, so __builtin_popcountll is a call
-// into libgcc's table-driven __popcountdi2 (about 3x slower per 32 x 32 query
+// into libgcc's __popcountdi2 per word (about 3x slower per 32 x 32 query
 // than the POPCNT instruction; docs/results/lazy-grid.md has the figures). The
 // same loop is compiled twice: with POPCNT enabled for this function alone,
 // taken when the CPU has the instruction (checked once), and with a branch-free
