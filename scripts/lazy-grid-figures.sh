@@ -7,6 +7,7 @@
 # Needs gnuplot for the plots (Debian's gnuplot-nox, installed when missing).
 # "No occlusion culling" is vfc, as in the paper ("but also with hierarchical
 # view frustum culling"). Takes about 10 minutes on one core.
+# GRIDCULL_BUILD_DIR=DIR builds and runs the gridcull in DIR instead of build/.
 #
 # usage: scripts/lazy-grid-figures.sh [--plots-only] [OUT_DIR] [RUNS]
 #   --plots-only   redraw the PNGs from the .csv / .txt files already in OUT_DIR
@@ -26,8 +27,14 @@ if ! command -v gnuplot >/dev/null; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends gnuplot-nox
 fi
-[ "$plots_only" -eq 1 ] || scripts/build.sh >/dev/null
-exe=build/app/gridcull
+# The build users run (scripts/build.sh: RelWithDebInfo, asserts live), gridcull
+# only, in build/ or $GRIDCULL_BUILD_DIR.
+build_dir="${GRIDCULL_BUILD_DIR:-build}"
+if [ "$plots_only" -eq 0 ]; then
+    cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+    cmake --build "$build_dir" -j"$(nproc)" --target gridcull >/dev/null
+fi
+exe=$build_dir/app/gridcull
 # Runs one bench into a table file, unless only the plots are redrawn.
 bench() {  # table-file bench-arguments...
     local table=$1

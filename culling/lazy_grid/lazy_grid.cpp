@@ -230,10 +230,10 @@ bool LazyOcclusionGrid::isOccludedOcclusionBuffer(const BoxOnScreen& box,
         bool part_free;
         if (extensions_.border_whole_fraction > 0.0 && cell.state == CellState::Outdated &&
             double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
-            // Section 6: query the whole cell (one query, counted once); the part,
-            // a subset of the pixels just read, is answered from the same words.
+            // Section 6: query the whole cell; when it is not full, the part is
+            // read again (a second pixel query, counted as one).
             updateCell(index);
-            part_free = !cell.full && pixels_->countFree(part) > 0;
+            part_free = !cell.full && queryFree(part) > 0;
         } else {
             part_free = queryFree(part) > 0;
             if (part_free && cell.state == CellState::Outdated)
@@ -302,8 +302,9 @@ bool LazyOcclusionGrid::isOccludedZBuffer(const BoxOnScreen& box, std::vector<Ce
             double(part.area()) > extensions_.border_whole_fraction * double(rect.area())) {
             updateCell(index);  // section 6: the whole cell, which bounds the part too
             free = znear <= cell.zfar;
-            // The whole cell is not behind the box; the part may still be.
-            if (free) free = znear <= pixels_->farthestDepth(part);
+            // The whole cell is not behind the box; the part may still be: a
+            // second pixel query, counted as one.
+            if (free) free = znear <= queryFar(part);
         } else {
             free = znear <= queryFar(part);
         }

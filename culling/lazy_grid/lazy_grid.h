@@ -38,8 +38,9 @@
 //   whose drawn area (the sum of the written rectangles' areas inside it, overlaps
 //   counted twice) is below probability_threshold of its area is rated free
 //   without a pixel query; a border cell whose intersection with the box exceeds
-//   border_whole_fraction of the cell is queried whole (one pass that also
-//   answers the intersection), so its state is updated and a full cell found; a
+//   border_whole_fraction of the cell is queried whole, so its state is updated
+//   and a full cell found, and when the cell is not full the intersection is
+//   read again (two pixel queries, both counted); a
 //   box whose rectangle exceeds large_box_fraction of the image treats its border
 //   cells as internal cells (tested whole: never culls more). All three only ever
 //   answer "visible" more often than the exact test, so none breaks conservatism.

@@ -50,9 +50,12 @@
 // traversal: O(log nodes) per node, O(cells) per test, O(pixels) per query and per
 // object drawn. Steady state allocates nothing (snapshots aside).
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <glm/vec4.hpp>
 
 #include "culling/api/culler.h"
 #include "culling/lazy_grid/bounding_volume_hierarchy.h"
@@ -120,6 +123,7 @@ private:
     int resolution_ = kDefaultImageResolution;
     BoundingVolumeHierarchy bvh_;
     ScreenMapping mapping_;
+    std::array<glm::dvec4, 6> frustum_planes_{};  // the frame's camera.frustumPlanes()
     OwnedImageTarget target_;  // copied by clone(), null when it cannot be
     std::string name_;
     LazyOcclusionGrid grid_;

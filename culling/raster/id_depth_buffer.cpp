@@ -34,9 +34,14 @@ void IdDepthBuffer::resize(int width, int height) {
     parity_.assign(pixels, 0);
     column_u_.assign(size_t(width), 0.0);
     row_v_.assign(size_t(height), 0.0);
+    column_inv_.assign(3 * size_t(width), 0.0);
+    column_zero_.assign(size_t(width), 0);
+    box_col_lo_.assign(size_t(width), 0.0);
+    box_col_hi_.assign(size_t(width), 0.0);
     tiles_x_ = (width + kTile - 1) / kTile;
     tiles_y_ = (height + kTile - 1) / kTile;
     tile_far_.assign(size_t(tiles_x_) * size_t(tiles_y_), 0.0);
+    clear_all_ = true;
 }
 
 void IdDepthBuffer::begin(const Camera& camera) {
@@ -51,8 +56,46 @@ void IdDepthBuffer::begin(const Camera& camera) {
         column_u_[size_t(px)] = (2.0 * (px + 0.5) / width_ - 1.0) * tan_x_;
     for (int py = 0; py < height_; ++py)
         row_v_[size_t(py)] = (1.0 - 2.0 * (py + 0.5) / height_) * tan_y_;
-    std::fill(depth_.begin(), depth_.end(), std::numeric_limits<double>::infinity());
-    std::fill(index_.begin(), index_.end(), -1);
+    // The box slab test's reciprocals (forBoxHits). A ray direction component
+    // forward[a] + v up[a] + u right[a] depends on the row alone when right[a]
+    // is 0 and on the column alone when up[a] is 0 (both hold for x and z, and
+    // right.y is 0, whenever the camera looks level): computed here once per frame
+    // in the very arithmetic the per-pixel path uses.
+    std::fill(column_zero_.begin(), column_zero_.end(), uint8_t(0));
+    any_column_zero_ = false;
+    for (int a = 0; a < 3; ++a) {
+        axis_mode_[a] = right_[a] == 0.0 ? AxisMode::Row
+                        : up_[a] == 0.0  ? AxisMode::Column
+                                         : AxisMode::Pixel;
+        if (axis_mode_[a] != AxisMode::Column) continue;
+        double* inv = column_inv_.data() + size_t(a) * size_t(width_);
+        for (int px = 0; px < width_; ++px) {
+            // (forward[a] + v * 0) + u * right[a], as the per-pixel path has it.
+            const double d = (forward_[a] + 0.0 * up_[a]) + column_u_[size_t(px)] * right_[a];
+            if (d == 0.0) column_zero_[size_t(px)] = 1, any_column_zero_ = true;
+            inv[px] = 1.0 / d;
+        }
+    }
+    // Only the pixels written since the last clear hold anything: every write
+    // is followed by refreshTiles(), which adds its rectangle to frame_cols_ x
+    // frame_rows_. The whole buffer after resize() or when ids are turned on.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    if (clear_all_ || (write_ids_ && !ids_cleared_)) {
+        std::fill(depth_.begin(), depth_.end(), kInf);
+        if (write_ids_) std::fill(index_.begin(), index_.end(), -1);
+    } else if (!frame_cols_.empty() && !frame_rows_.empty()) {
+        for (int py = frame_rows_.lo; py <= frame_rows_.hi; ++py) {
+            const size_t row = size_t(py) * size_t(width_);
+            std::fill(depth_.begin() + long(row + size_t(frame_cols_.lo)),
+                      depth_.begin() + long(row + size_t(frame_cols_.hi) + 1), kInf);
+            if (write_ids_)
+                std::fill(index_.begin() + long(row + size_t(frame_cols_.lo)),
+                          index_.begin() + long(row + size_t(frame_cols_.hi) + 1), -1);
+        }
+    }
+    clear_all_ = false;
+    ids_cleared_ = write_ids_;
+    frame_cols_ = frame_rows_ = ScreenRange{INT_MAX, -1};
     std::fill(tile_far_.begin(), tile_far_.end(), std::numeric_limits<double>::infinity());
     dirty_cols_ = dirty_rows_ = last_cols_ = last_rows_ = ScreenRange{INT_MAX, -1};
 }
@@ -61,17 +104,24 @@ void IdDepthBuffer::refreshTiles() {
     last_cols_ = dirty_cols_;
     last_rows_ = dirty_rows_;
     if (dirty_cols_.empty() || dirty_rows_.empty()) return;
+    frame_cols_ = {std::min(frame_cols_.lo, dirty_cols_.lo), std::max(frame_cols_.hi, dirty_cols_.hi)};
+    frame_rows_ = {std::min(frame_rows_.lo, dirty_rows_.lo), std::max(frame_rows_.hi, dirty_rows_.hi)};
     for (int ty = dirty_rows_.lo / kTile; ty <= dirty_rows_.hi / kTile; ++ty) {
         const int row_end = std::min(height_, (ty + 1) * kTile);
         for (int tx = dirty_cols_.lo / kTile; tx <= dirty_cols_.hi / kTile; ++tx) {
             const int col_end = std::min(width_, (tx + 1) * kTile);
+            // Draws only lower depths, so the new farthest is <= the old one: a
+            // row that still reaches the old value ends the scan (an empty pixel
+            // of a tile at +infinity at once).
+            double& tile = tile_far_[size_t(ty) * size_t(tiles_x_) + size_t(tx)];
+            const double old_far = tile;
             double farthest = 0.0;
-            for (int py = ty * kTile; py < row_end; ++py) {
+            for (int py = ty * kTile; py < row_end && farthest < old_far; ++py) {
                 const double* row = depth_.data() + size_t(py) * size_t(width_);
                 for (int px = tx * kTile; px < col_end; ++px)
                     farthest = std::max(farthest, row[px]);
             }
-            tile_far_[size_t(ty) * size_t(tiles_x_) + size_t(tx)] = farthest;
+            tile = farthest;
         }
     }
     dirty_cols_ = dirty_rows_ = ScreenRange{INT_MAX, -1};
@@ -114,7 +164,7 @@ void IdDepthBuffer::fillNear(int index) {
     for (size_t p = 0; p < depth_.size(); ++p) {
         if (near_ < depth_[p]) {
             depth_[p] = near_;
-            index_[p] = index;
+            if (write_ids_) index_[p] = index;
         }
     }
     markAllDirty();
@@ -179,19 +229,41 @@ bool IdDepthBuffer::drawSphere(int index, const glm::dvec3& center, double radiu
             col_hi = std::min(col_hi, span.hi);
         }
         double* depth_row = depth_.data() + size_t(py) * size_t(width_);
-        int32_t* index_row = index_.data() + size_t(py) * size_t(width_);
+        int32_t* index_row = write_ids_ ? index_.data() + size_t(py) * size_t(width_) : nullptr;
+        const double* column_u = column_u_.data();
+        // The row's written columns in locals, merged into the dirty rectangle once.
+        int written_lo = INT_MAX, written_hi = -1;
         forTileSegments(py, col_lo, col_hi, z_min, [&](int px) {
             if (depth_row[px] <= z_min) return;
-            const double u = column_u_[size_t(px)];
-            double s0, s1, s;
-            if (!solveSphereQuadratic(u * u + row_a, u * c.x + row_b, k, s0, s1)) return;
-            if (!solidEntry(s0, s1, near_, far_, s)) return;
+            // solveSphereQuadratic + solidEntry, term for term, except that the
+            // far root is only computed when the near one is not already the
+            // answer: s1 >= s0 always (root >= 0, a > 0, rounding is monotone),
+            // so s0 >= near > 0 makes solidEntry return s0.
+            const double u = column_u[px];
+            const double a = u * u + row_a, b = u * c.x + row_b;
+            if (!(a > 0.0)) return;
+            const double disc = b * b - a * k;
+            if (disc < 0.0) return;
+            const double root = std::sqrt(disc);
+            const double s0 = (b - root) / a;
+            double s;
+            if (s0 >= near_ && s0 > 0.0) {
+                if (!(s0 <= far_)) return;
+                s = s0;
+            } else if (!solidEntry(s0, (b + root) / a, near_, far_, s)) {
+                return;
+            }
             if (s < depth_row[px]) {
                 depth_row[px] = s;
-                index_row[px] = index;
-                markDirty(px, py);
+                if (index_row) index_row[px] = index;
+                written_lo = std::min(written_lo, px);
+                written_hi = px;
             }
         });
+        if (written_hi >= 0) {
+            markDirty(written_lo, py);
+            markDirty(written_hi, py);
+        }
     }
     refreshTiles();
     return true;
@@ -240,16 +312,116 @@ bool IdDepthBuffer::boxCandidates(const Aabb& box, ScreenRange& cols, ScreenRang
 template <typename Visit>
 void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange& cols,
                                const ScreenRange& rows, Visit&& visit) const {
+    // The slab test of lineBox, term for term, with its reciprocals 1 / dir[a]
+    // taken from the frame's tables where dir[a] depends on the row alone or on
+    // the column alone (see begin()); only the remaining axes divide per pixel.
+    // The arithmetic is that of lineBox + solidEntry, so every pixel gets the
+    // same answer and the same depth, bit for bit. A zero direction component
+    // (rare: one row or column at most) takes lineBox itself.
+    const double b_lo[3] = {box.min.x - eye_.x, box.min.y - eye_.y, box.min.z - eye_.z};
+    const double b_hi[3] = {box.max.x - eye_.x, box.max.y - eye_.y, box.max.z - eye_.z};
+    // The common case, a level camera: two axes by column, one by row, no zero
+    // component anywhere in the frame's tables.
+    int column_axes[3], column_count = 0;
+    bool pixel_axis = false;
+    for (int a = 0; a < 3; ++a) {
+        if (axis_mode_[a] == AxisMode::Column) column_axes[column_count++] = a;
+        if (axis_mode_[a] == AxisMode::Pixel) pixel_axis = true;
+    }
+    const bool two_columns = column_count == 2 && !pixel_axis && !any_column_zero_;
+    const int xa = column_axes[0], za = column_axes[1];
+    ScreenRange hit_cols{INT_MAX, -1};  // two_columns: the columns that may hit
+    if (two_columns) {
+        // The column axes' slabs depend on the column alone: one interval per
+        // column, shared by every row of this box.
+        const double* inv_x = column_inv_.data() + size_t(xa) * size_t(width_);
+        const double* inv_z = column_inv_.data() + size_t(za) * size_t(width_);
+        const double x_lo = b_lo[xa], x_hi = b_hi[xa], z_lo = b_lo[za], z_hi = b_hi[za];
+        for (int px = cols.lo; px <= cols.hi; ++px) {
+            const double tx0 = x_lo * inv_x[px], tx1 = x_hi * inv_x[px];
+            const double tz0 = z_lo * inv_z[px], tz1 = z_hi * inv_z[px];
+            const double lo = std::max(std::min(tx0, tx1), std::min(tz0, tz1));
+            const double hi = std::min(std::max(tx0, tx1), std::max(tz0, tz1));
+            box_col_lo_[size_t(px)] = lo;
+            box_col_hi_[size_t(px)] = hi;
+            // A pixel of a column whose interval is empty or wholly behind the
+            // eye misses (lineBox false, or solidEntry false with s1 < 0 < near).
+            if (lo <= hi && hi >= 0.0) {
+                hit_cols.lo = std::min(hit_cols.lo, px);
+                hit_cols.hi = px;
+            }
+        }
+        if (hit_cols.empty()) return;
+    }
     for (int py = rows.lo; py <= rows.hi; ++py) {
         const glm::dvec3 row_dir = forward_ + row_v_[size_t(py)] * up_;
         const double* depth_row = depth_.data() + size_t(py) * size_t(width_);
+        // Per axis: a row constant, a column table, or neither (divide per pixel).
+        double row_inv[3] = {0.0, 0.0, 0.0};
+        bool row_zero = false;
+        for (int a = 0; a < 3; ++a) {
+            if (axis_mode_[a] != AxisMode::Row) continue;
+            const double d = row_dir[a];
+            row_zero = row_zero || d == 0.0;
+            row_inv[a] = 1.0 / d;
+        }
+        if (two_columns && !row_zero) {
+            // The row axis's slab is one interval for the whole row, the column
+            // axes' one per column (above): the pixel's interval is their
+            // intersection. Same products, same min / max as lineBox (in another
+            // order, which max and min do not see).
+            const int ra = 3 - xa - za;
+            const double r0 = b_lo[ra] * row_inv[ra], r1 = b_hi[ra] * row_inv[ra];
+            const double row_lo = std::min(r0, r1), row_hi = std::max(r0, r1);
+            if (row_lo > row_hi) continue;
+            const double* col_lo = box_col_lo_.data();
+            const double* col_hi = box_col_hi_.data();
+            bool stop = false;
+            forTileSegments(py, hit_cols.lo, hit_cols.hi, z_min, [&](int px) {
+                if (stop || depth_row[px] <= z_min) return;
+                const double lo = std::max(row_lo, col_lo[px]);
+                const double hi = std::min(row_hi, col_hi[px]);
+                if (lo > hi) return;
+                double s;
+                if (!solidEntry(lo, hi, near_, far_, s)) return;
+                if (s < depth_row[px]) stop = visit(px, py, s);
+            });
+            if (stop) return;
+            continue;
+        }
         bool stop = false;
         forTileSegments(py, cols.lo, cols.hi, z_min, [&](int px) {
             if (stop || depth_row[px] <= z_min) return;
-            const glm::dvec3 dir = row_dir + column_u_[size_t(px)] * right_;
-            double s0, s1, s;
-            if (!lineBox(eye_, dir, box, s0, s1)) return;
-            if (!solidEntry(s0, s1, near_, far_, s)) return;
+            double lo = -std::numeric_limits<double>::infinity();
+            double hi = std::numeric_limits<double>::infinity();
+            if (row_zero || column_zero_[size_t(px)]) {
+                const glm::dvec3 dir = row_dir + column_u_[size_t(px)] * right_;
+                if (!lineBox(eye_, dir, box, lo, hi)) return;
+            } else {
+                const double u = column_u_[size_t(px)];
+                for (int a = 0; a < 3; ++a) {
+                    double inv;
+                    if (axis_mode_[a] == AxisMode::Row) {
+                        inv = row_inv[a];
+                    } else if (axis_mode_[a] == AxisMode::Column) {
+                        inv = column_inv_[size_t(a) * size_t(width_) + size_t(px)];
+                    } else {
+                        const double d = row_dir[a] + u * right_[a];
+                        if (d == 0.0) {
+                            const glm::dvec3 dir = row_dir + u * right_;
+                            if (!lineBox(eye_, dir, box, lo, hi)) return;
+                            break;
+                        }
+                        inv = 1.0 / d;
+                    }
+                    const double t0 = b_lo[a] * inv, t1 = b_hi[a] * inv;
+                    lo = std::max(lo, std::min(t0, t1));
+                    hi = std::min(hi, std::max(t0, t1));
+                }
+                if (lo > hi) return;
+            }
+            double s;
+            if (!solidEntry(lo, hi, near_, far_, s)) return;
             if (s < depth_row[px]) stop = visit(px, py, s);
         });
         if (stop) return;
@@ -265,13 +437,25 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
     double z_min = 0.0;
     if (!boxCandidates(box, cols, rows, z_min)) return false;
     if (!mayBeNearer(cols, rows, z_min)) return hiddenWhole();
+    // The written rectangle in locals (registers), merged into the dirty one once.
+    int col_lo = INT_MAX, col_hi = -1, row_lo = INT_MAX, row_hi = -1;
+    double* depth = depth_.data();
+    int32_t* ids = write_ids_ ? index_.data() : nullptr;
+    const size_t width = size_t(width_);
     forBoxHits(box, z_min, cols, rows, [&](int px, int py, double s) {
-        const size_t p = size_t(py) * size_t(width_) + size_t(px);
-        depth_[p] = s;
-        index_[p] = index;
-        markDirty(px, py);
+        const size_t p = size_t(py) * width + size_t(px);
+        depth[p] = s;
+        if (ids) ids[p] = index;
+        col_lo = std::min(col_lo, px);
+        col_hi = std::max(col_hi, px);
+        row_lo = std::min(row_lo, py);
+        row_hi = py;
         return false;
     });
+    if (col_hi >= 0) {
+        markDirty(col_lo, row_lo);
+        markDirty(col_hi, row_hi);
+    }
     refreshTiles();
     return true;
 }
@@ -288,6 +472,7 @@ bool IdDepthBuffer::boxPassesDepthTest(const Aabb& box) const {
 }
 
 void IdDepthBuffer::markVisible(std::vector<char>& seen) const {
+    assert(write_ids_ && "markVisible needs the ids: setWriteIds(true)");
     for (const int32_t index : index_) {
         if (index < 0) continue;
         assert(size_t(index) < seen.size());

@@ -15,6 +15,14 @@
 //
 // Spheres and boxes are intersected exactly (culling/scene/ray_intersect.h); a ray that
 // starts inside one, or whose near-plane point is inside, meets it at depth near.
+// Boxes use lineBox's slab test with its reciprocals 1 / dir[a] taken from
+// per-frame tables where a direction component depends on the row alone
+// (right[a] = 0) or the column alone (up[a] = 0): a level camera (forward.y = 0)
+// has x and z by column and y by row, so a box's x/z slab interval is computed
+// once per column and its y interval once per row, and a pixel only intersects
+// the two. The products and min/max are lineBox's, so every depth is the same
+// double as the plain per-pixel test gives (tests/culling/raster/
+// id_depth_buffer_box_test.cpp, no tolerance); other cameras divide per pixel.
 // Meshes are rasterized triangle by triangle: near-plane clipping, a fill rule
 // that gives a pixel centre on an edge shared by two triangles to exactly one
 // of them (the right and bottom edges own theirs, as the image is shown),
@@ -35,6 +43,11 @@
 // and whole 16 x 16 tiles whose farthest stored depth is (a coarse max-depth
 // buffer refreshed after each draw; a stale tile only errs towards "farther", so
 // the skipping never changes the result). No call allocates; resize() does.
+// A client that reads depths only turns the object ids off (setWriteIds):
+// nothing is then cleared or written in the id buffer. begin() clears only the
+// bounding rectangle of what was written since the previous begin(). Spheres
+// compute the far root of their quadratic only when the near one is not already
+// the answer (same depths, bit for bit; tested like boxes).
 #pragma once
 #include <algorithm>
 #include <climits>
@@ -71,6 +84,12 @@ public:
     int height() const { return height_; }
     // Makes room for meshes of up to `vertices` vertices, so drawMesh never allocates.
     void reserveMeshVertices(size_t vertices) { view_vertices_.reserve(vertices); }
+
+    // Whether draws write object indices (default true). A client that reads
+    // depths only (the software image target) turns them off: no index is
+    // cleared or written, and markVisible must not be called. Takes effect at
+    // the next begin().
+    void setWriteIds(bool write) { write_ids_ = write; }
 
     // Takes the camera for the following draw calls and clears every pixel.
     void begin(const Camera& camera);
@@ -183,10 +202,21 @@ private:
     int width_ = 0;
     int height_ = 0;
     std::vector<double> depth_;
-    std::vector<int32_t> index_;   // -1 where nothing was hit
+    std::vector<int32_t> index_;   // -1 where nothing was hit (when write_ids_)
+    bool write_ids_ = true;
     std::vector<uint8_t> parity_;  // per-pixel crossing parity of one closed mesh
     std::vector<double> column_u_;
     std::vector<double> row_v_;
+    // The box slab test's per-frame tables (begin(), forBoxHits): per axis,
+    // whether 1 / dir[a] is constant along a row, along a column, or neither;
+    // the column reciprocals (3 x width) and the columns where one is 1 / 0.
+    enum class AxisMode : uint8_t { Row, Column, Pixel };
+    AxisMode axis_mode_[3] = {AxisMode::Pixel, AxisMode::Pixel, AxisMode::Pixel};
+    std::vector<double> column_inv_;
+    std::vector<uint8_t> column_zero_;
+    bool any_column_zero_ = false;
+    // One box's slab interval per column from the column axes (forBoxHits).
+    mutable std::vector<double> box_col_lo_, box_col_hi_;
     std::vector<glm::dvec3> view_vertices_;  // one mesh's vertices in view space
     std::vector<double> tile_far_;           // per tile: its farthest stored depth
     int tiles_x_ = 0;
@@ -195,6 +225,13 @@ private:
     ScreenRange dirty_rows_{INT_MAX, -1};
     ScreenRange last_cols_{INT_MAX, -1};  // the dirty rectangle of the last draw
     ScreenRange last_rows_{INT_MAX, -1};
+    // Everything written since begin() (the next begin() clears only that), and
+    // whether the next begin() must clear every pixel (after resize(), or ids
+    // turned on after frames that did not clear them).
+    ScreenRange frame_cols_{INT_MAX, -1};
+    ScreenRange frame_rows_{INT_MAX, -1};
+    bool clear_all_ = true;
+    bool ids_cleared_ = false;
 
     glm::dvec3 eye_{0.0}, right_{1, 0, 0}, up_{0, 1, 0}, forward_{0, 0, 1};
     double tan_x_ = 1.0, tan_y_ = 1.0;

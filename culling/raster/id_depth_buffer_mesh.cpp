@@ -63,7 +63,7 @@ bool IdDepthBuffer::drawMesh(int index, const TriangleMesh& mesh, const glm::dve
         for (size_t p = 0; p < parity_.size(); ++p) {
             if (parity_[p] && near_ < depth_[p]) {
                 depth_[p] = near_;
-                index_[p] = index;
+                if (write_ids_) index_[p] = index;
             }
         }
         markAllDirty();
@@ -183,7 +183,7 @@ void IdDepthBuffer::rasterTriangle(int index, const glm::dvec3& a, const glm::dv
             const double depth = std::max(1.0 / inv_z, near_);
             if (depth > far_ || !(depth < depth_[p])) continue;
             depth_[p] = depth;
-            index_[p] = index;
+            if (write_ids_) index_[p] = index;
             markDirty(px, py);
         }
     }

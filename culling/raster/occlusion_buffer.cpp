@@ -61,20 +61,87 @@ void OcclusionBuffer::markOccluded(const PixelRect& rect) {
     }
 }
 
+namespace {
+
+// The occluded pixels of rows [y0, y1], words [w0, w1], with the first and last
+// word masked. The build has no -march flag, so __builtin_popcountll is a call
+// into libgcc's __popcountdi2 per word (about 3x slower per 32 x 32 query
+// than the POPCNT instruction; docs/results/lazy-grid.md has the figures). The
+// same loop is compiled twice: with POPCNT enabled for this function alone,
+// taken when the CPU has the instruction (checked once), and with a branch-free
+// SWAR count for any other x86-64.
+struct WordSpan {
+    const uint64_t* bits;
+    size_t words_per_row;
+    int y0, y1, w0, w1;
+    uint64_t first_mask, last_mask;
+};
+
+inline int popcountSwar(uint64_t x) {
+    x = x - ((x >> 1) & 0x5555555555555555ULL);
+    x = (x & 0x3333333333333333ULL) + ((x >> 2) & 0x3333333333333333ULL);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fULL;
+    return int((x * 0x0101010101010101ULL) >> 56);
+}
+
+template <typename Count>
+inline long long countOccluded(const WordSpan& s, Count count) {
+    long long occluded = 0;
+    for (int py = s.y0; py <= s.y1; ++py) {
+        const uint64_t* row = s.bits + size_t(py) * s.words_per_row;
+        if (s.w0 == s.w1) {
+            occluded += count(row[s.w0] & s.first_mask & s.last_mask);
+            continue;
+        }
+        occluded += count(row[s.w0] & s.first_mask);
+        for (int w = s.w0 + 1; w < s.w1; ++w) occluded += count(row[w]);
+        occluded += count(row[s.w1] & s.last_mask);
+    }
+    return occluded;
+}
+
+long long countOccludedSwar(const WordSpan& s) {
+    return countOccluded(s, popcountSwar);
+}
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+__attribute__((target("popcnt"))) long long countOccludedPopcnt(const WordSpan& s) {
+    return countOccluded(s, [](uint64_t x) { return __builtin_popcountll(x); });
+}
+bool cpuHasPopcnt() {
+    __builtin_cpu_init();  // may run before libgcc's constructor has
+    return __builtin_cpu_supports("popcnt");
+}
+long long countOccludedFast(const WordSpan& s) {
+    static const bool has_popcnt = cpuHasPopcnt();
+    return has_popcnt ? countOccludedPopcnt(s) : countOccludedSwar(s);
+}
+#else
+long long countOccludedFast(const WordSpan& s) {
+    return countOccluded(s, [](uint64_t x) { return __builtin_popcountll(x); });
+}
+#endif
+
+}  // namespace
+
 long long OcclusionBuffer::countFree(const PixelRect& rect) const {
     const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
     if (r.empty()) return 0;
-    const int w0 = r.x0 >> 6, w1 = r.x1 >> 6;
-    long long occluded = 0;
-    for (int py = r.y0; py <= r.y1; ++py) {
-        const uint64_t* row = bits_.data() + size_t(py) * words_per_row_;
-        for (int w = w0; w <= w1; ++w) {
-            const int lo = w == w0 ? (r.x0 & 63) : 0;
-            const int hi = w == w1 ? (r.x1 & 63) : 63;
-            occluded += __builtin_popcountll(row[w] & bitRange(lo, hi));
-        }
-    }
-    return r.area() - occluded;
+    const WordSpan span{bits_.data(),          words_per_row_,
+                        r.y0,                  r.y1,
+                        r.x0 >> 6,             r.x1 >> 6,
+                        bitRange(r.x0 & 63, 63), bitRange(0, r.x1 & 63)};
+    return r.area() - countOccludedFast(span);
+}
+
+long long OcclusionBuffer::countFreeSwar(const PixelRect& rect) const {
+    const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
+    if (r.empty()) return 0;
+    const WordSpan span{bits_.data(),          words_per_row_,
+                        r.y0,                  r.y1,
+                        r.x0 >> 6,             r.x1 >> 6,
+                        bitRange(r.x0 & 63, 63), bitRange(0, r.x1 & 63)};
+    return r.area() - countOccludedSwar(span);
 }
 
 }  // namespace gridcull

@@ -6,7 +6,8 @@
 // It is written from the shared rasterizer's z-buffer (culling/raster/
 // id_depth_buffer.h) after each draw: a pixel is occluded once something
 // was drawn at its centre. Queries count free pixels of a rectangle with word
-// masks and popcounts, so a 32 x 32 cell costs 32 word reads.
+// masks and popcounts, so a 32 x 32 cell costs 32 word reads (the POPCNT
+// instruction where the CPU has it, chosen at run time, else a SWAR count).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -32,6 +33,9 @@ public:
     void markOccluded(const PixelRect& rect);
     // Number of free pixels in `rect` (clipped to the image). O(rows * words).
     long long countFree(const PixelRect& rect) const;
+    // The same count by the portable SWAR popcount alone (what countFree uses
+    // on a CPU without POPCNT), so tests can compare both paths.
+    long long countFreeSwar(const PixelRect& rect) const;
     bool occluded(int px, int py) const {
         return (bits_[size_t(py) * words_per_row_ + size_t(px >> 6)] >> (px & 63)) & 1u;
     }

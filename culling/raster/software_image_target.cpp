@@ -67,6 +67,7 @@ bool SoftwareImageTarget::drawTriangles(int handle, int first, int count, int in
 
 void SoftwareImageTarget::begin(const Camera& camera, int width, int height, bool occlusion_bits) {
     zbuffer_.resize(width, height);
+    zbuffer_.setWriteIds(false);  // image-space cullers read depths (and bits) only
     zbuffer_.begin(camera);
     camera_ = camera;
     in_frame_ = true;

@@ -247,6 +247,48 @@ TEST(LazyGridStates, ZBufferVariantKeepsZfarAndAnOutdatedFlag) {
     EXPECT_EQ(step, OcclusionStep::BorderWithoutPixelQuery);
 }
 
+// Section 6's border-whole read: the whole cell is one pixel query, the part
+// read again after it a second one; both are counted (pixel_queries and
+// pixels_read), for both variants.
+TEST(LazyGridCounters, BorderWholeReadCountsTheWholeCellAndThePartAsTwoQueries) {
+    LazyGridExtensions ext;
+    ext.border_whole_fraction = 0.3;
+    {
+        OcclusionBuffer buffer;
+        buffer.resize(64, 32);
+        LazyOcclusionGrid grid;
+        grid.configure(64, 32, 32, LazyGridVariant::OcclusionBuffer, LazyGridUpdate::Lazy, ext);
+        const SoftwarePixelQueries pixels(&buffer, nullptr);
+        grid.begin(&pixels);
+        buffer.markOccluded({0, 0, 15, 31});  // cell 0 half occluded: outdated, not full
+        grid.afterDraw({0, 0, 15, 31}, {0, 0, 15, 31});
+        OcclusionStep step;
+        // A box over columns 0..23 of cell 0: a border part of 24 x 32 > 0.3 of the
+        // cell, with free pixels (16..23).
+        EXPECT_FALSE(grid.isOccluded(boxAt({0, 0, 23, 31}), step, nullptr));
+        EXPECT_EQ(step, OcclusionStep::BorderWithPixelQuery);
+        EXPECT_EQ(grid.counters().pixel_queries, 2);
+        EXPECT_EQ(grid.counters().pixels_read, 32 * 32 + 24 * 32);
+        EXPECT_EQ(grid.counters().cell_updates, 1);
+    }
+    {
+        ZScene z(64, 32);
+        LazyOcclusionGrid grid;
+        grid.configure(64, 32, 32, LazyGridVariant::ZBuffer, LazyGridUpdate::Lazy, ext);
+        const SoftwarePixelQueries pixels(nullptr, &z.zbuffer);
+        grid.begin(&pixels);
+        const PixelRect drawn = z.drawCovering(0, {0, 0, 15, 31}, 10.0);
+        grid.afterDraw(drawn, drawn);
+        OcclusionStep step;
+        // The cell's farthest depth is +infinity (columns 16.. are empty): not
+        // behind the box, so the part is read too.
+        EXPECT_FALSE(grid.isOccluded(boxAt({0, 0, 23, 31}, 20.0), step, nullptr));
+        EXPECT_EQ(step, OcclusionStep::BorderWithPixelQuery);
+        EXPECT_EQ(grid.counters().pixel_queries, 2);
+        EXPECT_EQ(grid.counters().pixels_read, 32 * 32 + 24 * 32);
+    }
+}
+
 // Random buffers, random draws and random boxes, interleaved: the grid's answer
 // against brute force over the box's pixels, for both variants and both updates.
 void checkAgainstBruteForce(LazyGridVariant variant, LazyGridUpdate update,
