@@ -40,7 +40,7 @@ int runSeekBench(const BenchCommand& c, const Scene& scene, const std::vector<Al
 
 struct TradeCommand {
     std::string scene, algo, out, draw;
-    double target = -1.0;  // --target R; < 0: no pick
+    std::vector<double> targets;  // --target R[,S...]: a pick for each
     long long frames = -1, runs = 3;
     KnobOptions knobs;
 };

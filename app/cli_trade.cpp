@@ -135,10 +135,12 @@ CLI::App* addTradeCommand(CLI::App& app, TradeCommand& c) {
     cmd->add_option("--algo", c.algo, "algorithms, comma-separated (listed below)")
         ->required()
         ->type_name("A[,B...]");
-    cmd->add_option("--target", c.target,
-                    "the PVS/exact to reach, 1 to 1e6: pick the cheapest setting within it")
+    cmd->add_option("--target", c.targets,
+                    "the PVS/exact to reach, 1 to 1e6: pick the cheapest setting within it\n"
+                    "(several, comma-separated: a pick for each)")
+        ->delimiter(',')
         ->check(CLI::Range(1.0, 1e6).description(""))
-        ->type_name("R");
+        ->type_name("R[,S...]");
     cmd->add_option("--out", c.out, "the folder to write (default: trade-SCENENAME)")
         ->type_name("DIR");
     cmd->add_option("--frames", c.frames,
@@ -229,7 +231,8 @@ int runTrade(const TradeCommand& c) {
     if (interrupted) std::fputs("\n", stderr);  // past the progress bar
 
     std::fputs(formatTradeTable(points).c_str(), stdout);
-    if (c.target > 0 && !points.empty()) printPicks(points, algorithms, c.target);
+    if (!points.empty())
+        for (double target : c.targets) printPicks(points, algorithms, target);
     if (!writeText(dir + "/trade.csv", formatTradeCsv(measured, points), error)) {
         std::cerr << "gridcull trade: " << error << "\n";
         return kExitFailure;
@@ -239,8 +242,9 @@ int runTrade(const TradeCommand& c) {
     // The CSV is written whatever happens to the plots, which need a display.
     bool plotted = true;
     if (!points.empty()) {
-        plotted = writePlots(dir, scene.name, points, algorithms, c.target > 0 ? c.target : 0.0,
-                             error);
+        // The plots mark the first target's pick.
+        plotted = writePlots(dir, scene.name, points, algorithms,
+                             c.targets.empty() ? 0.0 : c.targets.front(), error);
         if (plotted)
             std::printf("wrote %s/trade.png%s\n", dir.c_str(),
                         algorithms.size() > 1 ? " and one PNG per algorithm" : "");

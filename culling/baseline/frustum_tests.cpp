@@ -37,9 +37,14 @@ bool arcMeetsWedge(double center, double half_width, const Camera& camera) {
 }  // namespace
 
 bool boxMayIntersectFrustum(const Aabb& box, const Camera& camera) {
+    return boxMayIntersectFrustum(box, camera, camera.frustumPlanes());
+}
+
+bool boxMayIntersectFrustum(const Aabb& box, const Camera& camera,
+                            const std::array<glm::dvec4, 6>& planes) {
     if (box.contains(camera.position)) return true;
     const double slack = 1e-9 * std::max(1.0, camera.far);
-    for (const glm::dvec4& plane : camera.frustumPlanes()) {
+    for (const glm::dvec4& plane : planes) {
         // The corner furthest along the inward normal.
         const glm::dvec3 corner{plane.x >= 0.0 ? box.max.x : box.min.x,
                                 plane.y >= 0.0 ? box.max.y : box.min.y,

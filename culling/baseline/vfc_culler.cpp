@@ -11,6 +11,7 @@ void VfcCuller::reset(const Scene& /*scene*/) {}
 void VfcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
     out.stats = CullStats{};
     out.pvs.clear();
+    const std::array<glm::dvec4, 6> planes = camera.frustumPlanes();  // once, not per object
     for (const SceneObject& object : scene.objects) {
         bool keep;
         if (scene.dimensions == 2 && object.shape == ShapeKind::Sphere) {
@@ -19,7 +20,7 @@ void VfcCuller::cull(const Scene& scene, const Camera& camera, double t, FrameRe
         } else if (scene.dimensions == 2) {
             keep = boxMayIntersectWedge(scene.boundsAt(object, t), camera);
         } else {
-            keep = boxMayIntersectFrustum(scene.boundsAt(object, t), camera);
+            keep = boxMayIntersectFrustum(scene.boundsAt(object, t), camera, planes);
         }
         if (keep) out.pvs.push_back(object.id);
     }

@@ -105,29 +105,9 @@ void LazyGridCuller::cull(const Scene& scene, const Camera& camera, double t, Fr
     if (snapshot_enabled_) fillSnapshot();
 }
 
-namespace {
-
-// boxMayIntersectFrustum (culling/baseline/frustum_tests.cpp) term for term, with
-// the camera's planes computed once per frame instead of once per box.
-bool boxMayIntersectPlanes(const Aabb& box, const Camera& camera,
-                           const std::array<glm::dvec4, 6>& planes) {
-    if (box.contains(camera.position)) return true;
-    const double slack = 1e-9 * std::max(1.0, camera.far);
-    for (const glm::dvec4& plane : planes) {
-        const glm::dvec3 corner{plane.x >= 0.0 ? box.max.x : box.min.x,
-                                plane.y >= 0.0 ? box.max.y : box.min.y,
-                                plane.z >= 0.0 ? box.max.z : box.min.z};
-        if (plane.x * corner.x + plane.y * corner.y + plane.z * corner.z + plane.w < -slack)
-            return false;
-    }
-    return true;
-}
-
-}  // namespace
-
 void LazyGridCuller::offerToTestList(int32_t node, const Camera& camera) {
     const Aabb& box = bvh_.nodes()[size_t(node)].box;
-    if (!boxMayIntersectPlanes(box, camera, frustum_planes_)) {
+    if (!boxMayIntersectFrustum(box, camera, frustum_planes_)) {
         ++nodes_visited_;
         recordFrustumCull(node);
         return;
