@@ -126,12 +126,14 @@ int runBench(const BenchCommand& c) {
     }
     printUnusedNotes("bench", c.knobs, run_algorithms);
     if (!c.seek.empty()) {
-        if (!c.draw.empty()) return usageError("bench", "--seek times seeks and draws nothing: drop --draw");
+        if (!c.draw.empty())
+            return usageError("bench", "--seek times seeks and draws nothing: drop --draw");
         return runSeekBench(c, scene, algos);
     }
     const bool drawing = !c.draw.empty();
     if (drawing && c.no_quality)
-        return usageError("bench", "--draw needs the exact oracle for its limit row: drop --no-quality");
+        return usageError("bench",
+                          "--draw needs the exact oracle for its limit row: drop --no-quality");
     // The rows: the entries, then the limit when drawing.
     std::vector<std::string> row_names;
     for (const AlgoVariant& v : algos) row_names.push_back(v.label);
@@ -142,7 +144,8 @@ int runBench(const BenchCommand& c) {
         if (found == row_names.end()) {
             std::string names;
             for (const std::string& n : row_names) names += (names.empty() ? "" : ", ") + n;
-            return usageError("bench", "--baseline '" + c.baseline + "' is not a row; the rows are " + names);
+            return usageError("bench", "--baseline '" + c.baseline +
+                                           "' is not a row; the rows are " + names);
         }
         baseline = size_t(found - row_names.begin());
     }

@@ -41,6 +41,7 @@ int runSeekBench(const BenchCommand& c, const Scene& scene, const std::vector<Al
 struct TradeCommand {
     std::string scene, algo, out, draw;
     std::vector<double> targets;  // --target R[,S...]: a pick for each
+    bool replot = false;          // --replot: from DIR/trade.csv, no sweep
     long long frames = -1, runs = 3;
     KnobOptions knobs;
 };

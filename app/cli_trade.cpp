@@ -8,10 +8,13 @@
 #include <signal.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <iostream>
 
 #include "app/app_cullers.h"
@@ -154,10 +157,51 @@ CLI::App* addTradeCommand(CLI::App& app, TradeCommand& c) {
                     "gl: also draw each PVS (as bench --draw gl) and trade frame time")
         ->check(CLI::IsMember({"gl"}))
         ->type_name("gl");
+    cmd->add_flag("--replot", c.replot,
+                  "measure nothing: read DIR/trade.csv as written before, print its table\n"
+                  "and the --target picks, and draw the plots again");
     c.knobs.addTo(*cmd, false);
     cmd->footer(cullingHelpFooter(appAlgorithmNames()));
     return cmd;
 }
+
+namespace {
+
+// trade --replot: the table, picks and plots of a CSV written before.
+int replot(const TradeCommand& c, const std::string& dir, const std::string& scene_name) {
+    const std::string path = dir + "/trade.csv";
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        std::cerr << "gridcull trade: --replot: cannot read '" << path << "'\n";
+        return kExitFailure;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    std::vector<TradeSetting> settings;
+    std::vector<TradePoint> points;
+    std::string error;
+    if (!parseTradeCsv(text.str(), settings, points, error)) {
+        std::cerr << "gridcull trade: " << path << ": " << error << "\n";
+        return kExitFailure;
+    }
+    std::vector<std::string> algorithms;
+    for (const TradePoint& p : points)
+        if (std::find(algorithms.begin(), algorithms.end(), p.algorithm) == algorithms.end())
+            algorithms.push_back(p.algorithm);
+    std::fputs(formatTradeTable(points).c_str(), stdout);
+    for (double target : c.targets) printPicks(points, algorithms, target);
+    if (points.empty()) return kExitOk;
+    if (!writePlots(dir, scene_name, points, algorithms,
+                    c.targets.empty() ? 0.0 : c.targets.front(), error)) {
+        std::cerr << "gridcull trade: no plots: " << error << "\n";
+        return kExitFailure;
+    }
+    std::printf("wrote %s/trade.png%s\n", dir.c_str(),
+                algorithms.size() > 1 ? " and one PNG per algorithm" : "");
+    return kExitOk;
+}
+
+}  // namespace
 
 int runTrade(const TradeCommand& c) {
     std::string error;
@@ -173,6 +217,7 @@ int runTrade(const TradeCommand& c) {
             return usageError("trade", c.scene + ": " + error);
     printUnusedNotes("trade", c.knobs, algorithms);
     const std::string dir = c.out.empty() ? "trade-" + scene.name : c.out;
+    if (c.replot) return replot(c, dir, scene.name);
     if (!makeDirectory(dir, error)) {
         std::cerr << "gridcull trade: " << error << "\n";
         return kExitFailure;

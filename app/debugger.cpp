@@ -214,6 +214,7 @@ void Debugger::toggleFreeze() {
 FrameSnapshot Debugger::snapshot() const {
     FrameSnapshot s;
     s.scene = &session_.scene();
+    s.trade = &trade_.view();
     s.frame = session_.frame();
     s.t = session_.t();
     s.playing = playing_;
@@ -251,6 +252,7 @@ FrameSnapshot Debugger::snapshot() const {
 }
 
 UiActions Debugger::drawUi(const WindowLayout& layout) {
+    updateTrade();
     noteCheckpoints();
     ahead_frames_ = session_.computedAhead(ahead_);
     syncCompare(false);
@@ -292,6 +294,7 @@ void Debugger::openSceneFile(const std::string& path) {
         scene_errors_ = {error};
         return;
     }
+    trade_.clear();  // the curve was another scene's
     scene_errors_.clear();
     refreshSceneChoices();
     note_ = note;
@@ -352,6 +355,10 @@ void Debugger::apply(const UiActions& actions) {
     if (actions.scene.open) openSceneFile(actions.scene.path);
     if (!actions.family.knobs.empty()) applyKnobs(actions.family.knobs, {});
     if (actions.knobs.apply) applyKnobs(actions.knobs.set, actions.knobs.unset);
+    if (actions.knobs.trade.stop) trade_.stop();
+    if (actions.knobs.trade.start)
+        trade_.start(session_.scene(), session_.algo(), session_.knobs());
+    if (actions.knobs.trade.apply >= 0) applyTradeSetting(actions.knobs.trade.apply);
     if (actions.overlay_preset) applyOverlayPreset(*actions.overlay_preset);
     if (actions.lesson.go_to >= 0) goToLessonStep(actions.lesson.go_to);
     if (actions.lesson.auto_play >= 0) setLessonAutoPlay(actions.lesson.auto_play == 1);
@@ -373,6 +380,21 @@ void runFigures(const FrameHistory& history, int last, double& median_ms, double
 }
 
 }  // namespace
+
+void Debugger::applyTradeSetting(int index) {
+    const TradeSetting* setting = trade_.setting(index);
+    const FamilyEntry* family = setting ? familyOfAlgorithm(setting->algorithm) : nullptr;
+    if (!family) return;
+    std::vector<std::pair<std::string, double>> set;
+    std::vector<std::string> unset;
+    for (const Knob& k : family->knobs) {
+        if (setting->knobs.has(k.flag))
+            set.emplace_back(k.flag, setting->knobs.get(k));
+        else
+            unset.push_back(k.flag);
+    }
+    applyKnobs(set, unset);
+}
 
 void Debugger::applyKnobs(const std::vector<std::pair<std::string, double>>& set,
                           const std::vector<std::string>& unset) {

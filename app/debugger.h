@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/renderer.h"
+#include "app/trade_explorer.h"
 #include "app/view_camera.h"
 #include "app/window.h"
 #include "ui/debugger_session.h"
@@ -118,6 +119,9 @@ public:
     void drawScene(const WindowLayout& layout, int framebuffer_height, double scale = 1.0);
     double lastDrawMs() const { return last_draw_ms_; }
 
+    // Takes in what the trade curve's background sweep measured (drawUi does, each frame).
+    void updateTrade() { trade_.poll(session_.knobs()); }
+
     // What the panels are shown this frame.
     FrameSnapshot snapshot() const;
 
@@ -170,6 +174,9 @@ private:
     std::vector<std::string> scene_choices_;
     Checkpointing checkpointing_;
     KnobApplyCost knob_cost_;
+    TradeExplorer trade_;  // the trade curve's sweep, in the background
+    // Applies point `index` of the trade curve: the family's knobs as its setting has them.
+    void applyTradeSetting(int index);
     FrameHistory ahead_;  // the run computed ahead, copied each frame for the timeline
     int ahead_frames_ = 0;
     int hovered_index_ = -1;

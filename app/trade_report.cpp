@@ -1,7 +1,9 @@
 #include "app/trade_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace gridcull {
 
@@ -61,6 +63,71 @@ std::string formatTradeCsv(const std::vector<TradeSetting>& settings,
                (all[i] ? "1" : "0") + "\n";
     }
     return out;
+}
+
+bool parseTradeCsv(const std::string& text, std::vector<TradeSetting>& settings,
+                   std::vector<TradePoint>& points, std::string& error) {
+    settings.clear();
+    points.clear();
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start < text.size()) {
+        const size_t end = text.find('\n', start);
+        lines.push_back(text.substr(start, end == std::string::npos ? end : end - start));
+        start = end == std::string::npos ? text.size() : end + 1;
+    }
+    auto split = [](const std::string& line) {
+        std::vector<std::string> cells(1);
+        for (char ch : line) {
+            if (ch == ',')
+                cells.emplace_back();
+            else
+                cells.back() += ch;
+        }
+        return cells;
+    };
+    const std::string header = formatTradeCsv({}, {});
+    if (lines.empty() || lines[0] + "\n" != header) {
+        error = "line 1: expected the header gridcull trade writes: " +
+                header.substr(0, header.size() - 1);
+        return false;
+    }
+    const size_t columns = split(lines[0]).size();
+    for (size_t n = 1; n < lines.size(); ++n) {
+        const std::vector<std::string> c = split(lines[n]);
+        const std::string where = "line " + std::to_string(n + 1) + ": ";
+        if (c.size() != columns) {
+            error = where + "expected " + std::to_string(columns) + " columns, got " +
+                    std::to_string(c.size());
+            return false;
+        }
+        auto number = [&](size_t i, double& v) {
+            if (c[i].empty()) {
+                v = 0.0;
+                return true;
+            }
+            char* end = nullptr;
+            v = std::strtod(c[i].c_str(), &end);
+            if (end && *end == '\0' && std::isfinite(v)) return true;
+            error = where + "column " + std::to_string(i + 1) + ": expected a number, got '" +
+                    c[i] + "'";
+            return false;
+        };
+        TradeSetting s;
+        TradePoint p;
+        double false_culls = 0;
+        p.setting = s.label = c[0];
+        p.algorithm = s.algorithm = c[1];
+        s.knob = c[2];
+        if (!number(3, s.value) || !number(4, p.cull_ms) || !number(5, p.cull_p95_ms) ||
+            !number(6, p.draw_ms) || !number(7, p.frame_ms) || !number(8, p.frame_p95_ms) ||
+            !number(9, p.memory_bytes) || !number(10, p.pvs_ratio) || !number(11, false_culls))
+            return false;
+        p.false_culls = int64_t(false_culls);
+        settings.push_back(s);
+        points.push_back(p);
+    }
+    return true;
 }
 
 std::string formatTradeTable(const std::vector<TradePoint>& points) {

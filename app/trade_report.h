@@ -15,6 +15,10 @@ namespace gridcull {
 // and on the front of all the algorithms together.
 std::string formatTradeCsv(const std::vector<TradeSetting>& settings,
                            const std::vector<TradePoint>& points);
+// Reads what formatTradeCsv wrote back (for trade --replot): false with
+// `error` naming the line and what was expected.
+bool parseTradeCsv(const std::string& text, std::vector<TradeSetting>& settings,
+                   std::vector<TradePoint>& points, std::string& error);
 // The table printed at the end: the same columns, front marked with '*'.
 std::string formatTradeTable(const std::vector<TradePoint>& points);
 

@@ -15,6 +15,8 @@
 
 namespace gridcull {
 
+struct TradeCurveView;  // ui/trade_panel.h
+
 // Per-frame values for the plots, one slot per scene frame; slots 0..frame are
 // filled (culling always runs from frame 0 up to the current frame).
 struct FrameHistory {
@@ -100,6 +102,7 @@ struct FrameSnapshot {
     int timeline_frames = 0;
     const KnobValues* knobs = nullptr;  // the values the cullers were made with
     KnobApplyCost knob_cost;
+    const TradeCurveView* trade = nullptr;  // the window's trade sweep (null: none)
 
     HoverInfo hover;
     double draw_ms = 0.0;      // CPU time of the last scene draw, up to glFinish

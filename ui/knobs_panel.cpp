@@ -142,6 +142,8 @@ KnobsAction drawKnobsPanel(const FrameSnapshot& snapshot, KnobsPanelState& state
     }
     ImGui::EndDisabled();
     drawCost(snapshot);
+    // The same trade measured over every setting the family sweeps.
+    if (snapshot.trade) action.trade = drawTradePanel(*snapshot.trade, algo);
     return action;
 }
 

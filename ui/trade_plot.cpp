@@ -21,7 +21,8 @@ constexpr Swatch kSeries[] = {Swatch::Blue,          Swatch::Orange, Swatch::Blu
                               Swatch::Grey};
 // Points closer than this to the pointer (in design pixels) are hovered.
 constexpr float kPickRadius = 8.0f;
-// Costs spanning more than this ratio are plotted on a log scale.
+// Costs spanning more than this ratio, and PVS/exact reaching beyond it, are
+// plotted on a log scale, so the settings near the best keep room apart.
 constexpr double kLogScaleSpan = 10.0;
 
 ImU32 colorOf(Swatch swatch, float alpha = 1.0f) {
@@ -39,14 +40,16 @@ std::string number(double v) {
 struct Axes {
     ImVec2 lo, hi;  // the box, pixels
     double x0 = 0, x1 = 1, y0 = 1, y1 = 2;
-    bool log_x = false;
+    bool log_x = false, log_y = false;
     double xOf(double cost) const {
         const double a = log_x ? std::log10(cost) : cost;
         const double b0 = log_x ? std::log10(x0) : x0, b1 = log_x ? std::log10(x1) : x1;
         return lo.x + (a - b0) / (b1 - b0) * (hi.x - lo.x);
     }
     double yOf(double ratio) const {
-        return hi.y - (ratio - y0) / (y1 - y0) * (hi.y - lo.y);
+        const double a = log_y ? std::log10(ratio) : ratio;
+        const double b0 = log_y ? std::log10(y0) : y0, b1 = log_y ? std::log10(y1) : y1;
+        return hi.y - (a - b0) / (b1 - b0) * (hi.y - lo.y);
     }
 };
 
@@ -72,32 +75,36 @@ Axes axesFor(const std::vector<TradePoint>& points, double target, ImVec2 lo, Im
         a.x1 = cmax + pad;
     }
     a.y0 = 1.0;
-    a.y1 = 1.0 + (rmax - 1.0) * 1.08 + 0.02;
+    a.log_y = rmax > kLogScaleSpan;
+    a.y1 = a.log_y ? rmax * 1.25 : 1.0 + (rmax - 1.0) * 1.08 + 0.02;
     return a;
+}
+
+// Decades (and 2, 5) on a log scale, five steps on a linear one.
+std::vector<double> ticksOf(double lo, double hi, bool log) {
+    std::vector<double> ticks;
+    if (!log) {
+        for (int k = 0; k <= 4; ++k) ticks.push_back(lo + (hi - lo) * k / 4);
+        return ticks;
+    }
+    for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
+        for (double m : {1.0, 2.0, 5.0})
+            if (decade * m >= lo && decade * m <= hi) ticks.push_back(decade * m);
+    return ticks;
 }
 
 void drawAxes(ImDrawList& draw, const Axes& a) {
     const ImU32 grid = colorOf(Swatch::LineGrey), text = colorOf(Swatch::LightGrey);
     draw.AddRect(a.lo, a.hi, grid);
     // x ticks: decades (and 2, 5) on a log scale, five steps on a linear one.
-    std::vector<double> ticks;
-    if (a.log_x) {
-        for (double decade = std::pow(10.0, std::floor(std::log10(a.x0))); decade <= a.x1;
-             decade *= 10)
-            for (double m : {1.0, 2.0, 5.0})
-                if (decade * m >= a.x0 && decade * m <= a.x1) ticks.push_back(decade * m);
-    } else {
-        for (int k = 0; k <= 4; ++k) ticks.push_back(a.x0 + (a.x1 - a.x0) * k / 4);
-    }
-    for (double v : ticks) {
+    for (double v : ticksOf(a.x0, a.x1, a.log_x)) {
         const float x = float(a.xOf(v));
         draw.AddLine(ImVec2(x, a.lo.y), ImVec2(x, a.hi.y), colorOf(Swatch::LineGrey, 0.35f));
         const std::string label = number(v);
         const ImVec2 size = ImGui::CalcTextSize(label.c_str());
         draw.AddText(ImVec2(x - size.x / 2, a.hi.y + 2), text, label.c_str());
     }
-    for (int k = 0; k <= 4; ++k) {
-        const double v = a.y0 + (a.y1 - a.y0) * k / 4;
+    for (double v : ticksOf(a.y0, a.y1, a.log_y)) {
         const float y = float(a.yOf(v));
         draw.AddLine(ImVec2(a.lo.x, y), ImVec2(a.hi.x, y), colorOf(Swatch::LineGrey, 0.35f));
         const std::string label = number(v);
@@ -141,9 +148,12 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
                  colorOf(Swatch::LightGrey), x_name);
     draw.AddText(ImVec2(origin.x, origin.y), colorOf(Swatch::LightGrey),
                  "PVS/exact (1: exact; crosses: false culls)");
-    if (axes.log_x)
-        draw.AddText(ImVec2(hi.x - ImGui::CalcTextSize("log scale").x, hi.y + 1.3f * line),
-                     colorOf(Swatch::LineGrey), "log scale");
+    const char* scale = axes.log_x && axes.log_y ? "log scales"
+                        : axes.log_x             ? "log scale"
+                        : axes.log_y             ? "PVS/exact on a log scale"
+                                                 : "";
+    draw.AddText(ImVec2(hi.x - ImGui::CalcTextSize(scale).x, hi.y + 1.3f * line),
+                 colorOf(Swatch::LineGrey), scale);
 
     // Series in order of first appearance.
     std::map<std::string, int> series;
@@ -210,7 +220,8 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     for (size_t i : paretoFront(points)) {
         const std::string& label = points[i].setting;
         const size_t colon = label.find(':');
-        const std::string knob = colon == std::string::npos ? "defaults" : label.substr(colon + 1);
+        // The knob and value; the base setting by its algorithm's name.
+        const std::string knob = colon == std::string::npos ? label : label.substr(colon + 1);
         const ImVec2 c = at(points[i]);
         const ImVec2 size = ImGui::CalcTextSize(knob.c_str());
         const float x = std::min(c.x + 1.5f * r, hi.x - size.x - 2);

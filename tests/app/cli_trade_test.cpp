@@ -3,6 +3,7 @@
 // pick, bad input is refused, and Ctrl-C leaves a CSV of whole rows.
 #include <sys/stat.h>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,6 +59,26 @@ TEST(CliTrade, WritesEverySettingThePlotsAndThePick) {
     EXPECT_TRUE(fileExists(dir + "/lazy-grid.png"));
     EXPECT_NE(r.out.find("target PVS/exact <= 5 with no false cull:"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("cheapest of all: lazy-grid"), std::string::npos) << r.out;
+
+    // --replot: the same table and pick from the CSV, with no sweep.
+    const std::string scene = "'" + test::sourcePath("scenes/city-walk-3d.json") + "'";
+    const test::CommandResult again =
+        test::runGridcull("trade " + scene + " --algo vfc --replot --target 5 --out '" + dir + "'");
+    ASSERT_EQ(again.status, 0) << again.err;
+    const std::string pick = r.out.substr(r.out.find("cheapest of all:"));
+    EXPECT_EQ(pick.substr(0, pick.find('\n')),
+              again.out.substr(again.out.find("cheapest of all:")).substr(0, pick.find('\n')));
+    // A damaged CSV is named by line and column.
+    std::string csv = test::readWholeFile(dir + "/trade.csv");
+    csv.replace(csv.find('\n') + 1, csv.find(',', csv.find('\n')) - csv.find('\n'), "x,x,x,y,");
+    {
+        std::ofstream out(dir + "/trade.csv");
+        out << csv;
+    }
+    const test::CommandResult bad =
+        test::runGridcull("trade " + scene + " --algo vfc --replot --out '" + dir + "'");
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_NE(bad.err.find("trade.csv: line 2:"), std::string::npos) << bad.err;
 }
 
 TEST(CliTrade, RefusesWhatItCannotSweep) {
