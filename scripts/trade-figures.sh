@@ -10,7 +10,7 @@
 # usage: scripts/trade-figures.sh BUILD_DIR OUT_DIR [FRAMES [RUNS]]
 #   FRAMES  frames of each 3D scene (default 60; figure1-2d runs all 200)
 #   RUNS    runs of each setting and bench (default 2)
-# About 20 minutes on the 2-core development machine.
+# About 25 minutes on the 2-core development machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$1

@@ -39,7 +39,7 @@ TradeAction drawTradePanel(const TradeCurveView& view, const std::string& select
     }
     if (!view.error.empty()) ImGui::TextWrapped("Stopped: %s", view.error.c_str());
     if (view.algorithm.empty()) return action;
-    ImGui::TextDisabled("%zu of %d settings, frames 0..%d, %d run%s; cull ms (no draw)",
+    ImGui::TextDisabled("%zu of %d settings, frames 0..%d, %d run%s",
                         view.points.size(), view.settings, view.frames - 1, view.runs,
                         view.runs == 1 ? "" : "s");
     TradePlotInput input;

@@ -136,8 +136,19 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     const bool clicked = ImGui::IsItemClicked();
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     const float line = ImGui::GetTextLineHeight();
-    // Above the box a row for the y axis's name and the legend.
-    const ImVec2 lo(origin.x + 4 * line, origin.y + 1.8f * line);
+    // Series in order of first appearance.
+    std::map<std::string, int> series;
+    std::vector<std::string> names;
+    for (const TradePoint& p : points)
+        if (series.emplace(p.algorithm, int(names.size())).second) names.push_back(p.algorithm);
+    // Above the box a row for the y axis's name and the legend; the legend
+    // takes a row of its own when both do not fit in one.
+    const char* y_name = "PVS/exact (crosses: false culls)";
+    float legend_width = 0.0f;
+    for (const std::string& n : names) legend_width += ImGui::CalcTextSize(n.c_str()).x + 2 * line;
+    const bool legend_row = ImGui::CalcTextSize(y_name).x + legend_width + line > width;
+    const float legend_y = origin.y + (legend_row ? 1.2f * line : 0.0f);
+    const ImVec2 lo(origin.x + 4 * line, legend_y + 1.8f * line);
     const ImVec2 hi(origin.x + width - 0.5f * line, origin.y + height - 2.6f * line);
     const Axes axes = axesFor(points, input.target, lo, hi);
     drawAxes(draw, axes);
@@ -146,8 +157,7 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     const ImVec2 x_size = ImGui::CalcTextSize(x_name);
     draw.AddText(ImVec2((lo.x + hi.x - x_size.x) / 2, hi.y + 1.3f * line),
                  colorOf(Swatch::LightGrey), x_name);
-    draw.AddText(ImVec2(origin.x, origin.y), colorOf(Swatch::LightGrey),
-                 "PVS/exact (1: exact; crosses: false culls)");
+    draw.AddText(ImVec2(origin.x, origin.y), colorOf(Swatch::LightGrey), y_name);
     const char* scale = axes.log_x && axes.log_y ? "log scales"
                         : axes.log_x             ? "log scale"
                         : axes.log_y             ? "PVS/exact on a log scale"
@@ -155,11 +165,6 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     draw.AddText(ImVec2(hi.x - ImGui::CalcTextSize(scale).x, hi.y + 1.3f * line),
                  colorOf(Swatch::LineGrey), scale);
 
-    // Series in order of first appearance.
-    std::map<std::string, int> series;
-    std::vector<std::string> names;
-    for (const TradePoint& p : points)
-        if (series.emplace(p.algorithm, int(names.size())).second) names.push_back(p.algorithm);
     auto seriesColor = [&](int s, float alpha = 1.0f) {
         return colorOf(kSeries[size_t(s) % (sizeof kSeries / sizeof kSeries[0])], alpha);
     };
@@ -239,8 +244,8 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     for (size_t s = names.size(); s-- > 0;) {
         const ImVec2 size = ImGui::CalcTextSize(names[s].c_str());
         x -= size.x;
-        draw.AddText(ImVec2(x, origin.y), colorOf(Swatch::LightGrey), names[s].c_str());
-        draw.AddCircleFilled(ImVec2(x - 0.7f * line, origin.y + size.y / 2), r,
+        draw.AddText(ImVec2(x, legend_y), colorOf(Swatch::LightGrey), names[s].c_str());
+        draw.AddCircleFilled(ImVec2(x - 0.7f * line, legend_y + size.y / 2), r,
                              seriesColor(int(s)));
         x -= 2.0f * line;
     }
