@@ -105,6 +105,7 @@ bool writePlots(const std::string& dir, const std::string& scene_name,
     input.points = &points;
     input.target = target;
     input.title = scene_name + ": " + std::to_string(points.size()) + " settings";
+    input.series_order = algorithms;  // each algorithm's own plot keeps its colour
     if (target > 0) input.chosen = cheapestWithin(points, target);
     if (!png.write(input, dir + "/trade.png", error)) return false;
     if (algorithms.size() < 2) return true;

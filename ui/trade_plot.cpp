@@ -64,7 +64,12 @@ Axes axesFor(const std::vector<TradePoint>& points, double target, ImVec2 lo, Im
         rmax = std::max(rmax, p.pvs_ratio);
     }
     rmax = std::max(rmax, target);
-    cmax = std::max(cmax, cmin * 1.01);
+    // A single cost (or a few alike) gets a range around it, not a sliver.
+    if (cmax < cmin * 1.2) {
+        const double mid = 0.5 * (cmin + cmax);
+        cmin = std::min(cmin, mid / 1.2);
+        cmax = std::max(cmax, mid * 1.2);
+    }
     a.log_x = cmax / cmin > kLogScaleSpan;
     if (a.log_x) {
         a.x0 = cmin / 1.25;
@@ -137,10 +142,14 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     const float line = ImGui::GetTextLineHeight();
     // Series in order of first appearance.
-    std::map<std::string, int> series;
-    std::vector<std::string> names;
-    for (const TradePoint& p : points)
-        if (series.emplace(p.algorithm, int(names.size())).second) names.push_back(p.algorithm);
+    std::map<std::string, int> series;  // algorithm -> colour
+    for (const std::string& name : input.series_order) series.emplace(name, int(series.size()));
+    std::vector<std::string> names;  // those plotted, in order of appearance
+    for (const TradePoint& p : points) {
+        if (std::find(names.begin(), names.end(), p.algorithm) != names.end()) continue;
+        names.push_back(p.algorithm);
+        series.emplace(p.algorithm, int(series.size()));
+    }
     // Above the box a row for the y axis's name and the legend; the legend
     // takes a row of its own when both do not fit in one.
     const char* y_name = "PVS/exact (crosses: false culls)";
@@ -188,8 +197,8 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
             }
         const std::vector<size_t> front = paretoFront(own);
         for (size_t k = 1; k < front.size(); ++k)
-            draw.AddLine(at(own[front[k - 1]]), at(own[front[k]]), seriesColor(int(s), 0.8f),
-                         kBoldLine);
+            draw.AddLine(at(own[front[k - 1]]), at(own[front[k]]),
+                         seriesColor(series[names[s]], 0.8f), kBoldLine);
     }
     const float r = scaledPixels(4.0f);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -246,7 +255,7 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
         x -= size.x;
         draw.AddText(ImVec2(x, legend_y), colorOf(Swatch::LightGrey), names[s].c_str());
         draw.AddCircleFilled(ImVec2(x - 0.7f * line, legend_y + size.y / 2), r,
-                             seriesColor(int(s)));
+                             seriesColor(series[names[s]]));
         x -= 2.0f * line;
     }
 

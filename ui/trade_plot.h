@@ -19,6 +19,10 @@ struct TradePlotInput {
     double target = 0.0;  // > 0: the target PVS/exact, drawn as a line
     int chosen = -1;      // the target's pick, an index into points
     int current = -1;     // the setting in use (the window), an index into points
+    // Algorithms in the order their colours are dealt, so that a plot of one
+    // algorithm keeps the colour it has in the plot of all; empty: the order
+    // in which they first appear in points.
+    std::vector<std::string> series_order;
 };
 
 struct TradePlotResult {
