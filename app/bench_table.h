@@ -50,7 +50,7 @@ struct BenchSummary {
 
 // The query cost model: the frame's measured time (cull, or cull + draw when
 // drawn) plus `queries` round trips of `cost_us` microseconds each, the regime
-// where a query waits for the GPU (the lazy grid's paper: a glReadPixels round
+// where a query waits for the GPU (a glReadPixels round
 // trip of microseconds) rather than reading memory (about 0.1 us here). The
 // measured part keeps this machine's own query cost, which overstates the model
 // by at most queries x that.

@@ -32,7 +32,7 @@ struct TradeSetting {
     std::string algorithm;  // a registry name
     std::string knob;       // the flag set apart from the defaults; "" for the defaults
     double value = 0.0;
-    std::string label;  // "lazy-grid" or "lazy-grid:lazy-cell-size=8", as bench --algo takes it
+    std::string label;  // "NAME" or "NAME:FLAG=VALUE", as bench --algo takes it
     KnobValues knobs;   // the base values with `knob` set
 };
 

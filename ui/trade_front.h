@@ -15,8 +15,8 @@
 namespace gridcull {
 
 struct TradePoint {
-    std::string setting;     // "rgvc:rgvc-grid-res=64", say
-    std::string algorithm;   // "rgvc": the curve it belongs to
+    std::string setting;     // "NAME:FLAG=VALUE", or "NAME" for the defaults
+    std::string algorithm;   // NAME: the curve it belongs to
     double cull_ms = 0.0;    // median per frame
     double cull_p95_ms = 0.0;
     double draw_ms = 0.0;    // median per frame; 0 when the sweep did not draw

@@ -66,7 +66,7 @@ namespace {
 // The occluded pixels of rows [y0, y1], words [w0, w1], with the first and last
 // word masked. The build has no -march flag, so __builtin_popcountll is a call
 // into libgcc's __popcountdi2 per word (about 3x slower per 32 x 32 query
-// than the POPCNT instruction; docs/results/lazy-grid.md has the figures). The
+// than the POPCNT instruction; docs/results/ has the figures). The
 // same loop is compiled twice: with POPCNT enabled for this function alone,
 // taken when the CPU has the instruction (checked once), and with a branch-free
 // SWAR count for any other x86-64.
@@ -122,26 +122,24 @@ long long countOccludedFast(const WordSpan& s) {
 }
 #endif
 
+// The words of rectangle `r` (inside the buffer, not empty).
+WordSpan spanOf(const uint64_t* bits, size_t words_per_row, const PixelRect& r) {
+    return {bits,      words_per_row,          r.y0, r.y1, r.x0 >> 6,
+            r.x1 >> 6, bitRange(r.x0 & 63, 63), bitRange(0, r.x1 & 63)};
+}
+
 }  // namespace
 
 long long OcclusionBuffer::countFree(const PixelRect& rect) const {
     const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
     if (r.empty()) return 0;
-    const WordSpan span{bits_.data(),          words_per_row_,
-                        r.y0,                  r.y1,
-                        r.x0 >> 6,             r.x1 >> 6,
-                        bitRange(r.x0 & 63, 63), bitRange(0, r.x1 & 63)};
-    return r.area() - countOccludedFast(span);
+    return r.area() - countOccludedFast(spanOf(bits_.data(), words_per_row_, r));
 }
 
 long long OcclusionBuffer::countFreeSwar(const PixelRect& rect) const {
     const PixelRect r = rect.intersect({0, 0, width_ - 1, height_ - 1});
     if (r.empty()) return 0;
-    const WordSpan span{bits_.data(),          words_per_row_,
-                        r.y0,                  r.y1,
-                        r.x0 >> 6,             r.x1 >> 6,
-                        bitRange(r.x0 & 63, 63), bitRange(0, r.x1 & 63)};
-    return r.area() - countOccludedSwar(span);
+    return r.area() - countOccludedSwar(spanOf(bits_.data(), words_per_row_, r));
 }
 
 }  // namespace gridcull

@@ -4,6 +4,7 @@
 // a point applies its setting to the cullers. Needs a GL context (the test run
 // provides an X display, under xvfb-run).
 #include <chrono>
+#include <memory>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -28,17 +29,27 @@ void waitForSweep(Debugger& debugger) {
     FAIL() << "the trade sweep did not end within a minute";
 }
 
-TEST(DebuggerTrade, SweepsInTheBackgroundMarksTheSettingInUseAndAppliesAClickedOne) {
-    GlWindow window;
-    std::string error;
-    ASSERT_TRUE(window.create(64, 64, "gridcull test", false, error)) << error;
-    ViewOptions options;
-    options.algo = "lazy-grid";
-    options.knobs.set("oracle-res", 96);
-    Debugger debugger(options);
-    SceneLoadResult loaded = loadSceneFile(test::sourcePath("scenes/city-walk-3d.json"));
-    ASSERT_TRUE(loaded.scene);
-    ASSERT_TRUE(debugger.init(std::move(*loaded.scene), error)) << error;
+// A window's debugger on `scene_file` with the lazy grid and a small oracle.
+class DebuggerTrade : public ::testing::Test {
+protected:
+    void open(const char* scene_file) {
+        std::string error;
+        ASSERT_TRUE(window_.create(64, 64, "gridcull test", false, error)) << error;
+        ViewOptions options;
+        options.algo = "lazy-grid";
+        options.knobs.set("oracle-res", 96);
+        debugger_ = std::make_unique<Debugger>(options);
+        SceneLoadResult loaded = loadSceneFile(test::sourcePath(scene_file));
+        ASSERT_TRUE(loaded.scene);
+        ASSERT_TRUE(debugger_->init(std::move(*loaded.scene), error)) << error;
+    }
+    GlWindow window_;
+    std::unique_ptr<Debugger> debugger_;
+};
+
+TEST_F(DebuggerTrade, SweepsInTheBackgroundMarksTheSettingInUseAndAppliesAClickedOne) {
+    open("scenes/city-walk-3d.json");
+    Debugger& debugger = *debugger_;
     EXPECT_TRUE(debugger.snapshot().trade->algorithm.empty());
 
     UiActions start;
@@ -66,17 +77,9 @@ TEST(DebuggerTrade, SweepsInTheBackgroundMarksTheSettingInUseAndAppliesAClickedO
     EXPECT_EQ(debugger.snapshot().trade->current, cell16);
 }
 
-TEST(DebuggerTrade, AStoppedSweepKeepsWhatItMeasuredAndSaysSo) {
-    GlWindow window;
-    std::string error;
-    ASSERT_TRUE(window.create(64, 64, "gridcull test", false, error)) << error;
-    ViewOptions options;
-    options.algo = "lazy-grid";
-    options.knobs.set("oracle-res", 96);
-    Debugger debugger(options);
-    SceneLoadResult loaded = loadSceneFile(test::sourcePath("scenes/forest-walk-3d.json"));
-    ASSERT_TRUE(loaded.scene);
-    ASSERT_TRUE(debugger.init(std::move(*loaded.scene), error)) << error;
+TEST_F(DebuggerTrade, AStoppedSweepKeepsWhatItMeasuredAndSaysSo) {
+    open("scenes/forest-walk-3d.json");
+    Debugger& debugger = *debugger_;
     UiActions start;
     start.knobs.trade.start = true;
     debugger.apply(start);

@@ -22,18 +22,8 @@
 namespace gridcull {
 namespace {
 
-// The wall of tests/culling/lazy_grid/lazy_grid_traversal_test.cpp: five spheres hidden
-// behind it, one peeking over its top edge, one beside it.
-Scene wallScene() {
-    Scene scene = test::scene3d();
-    test::setCamera(scene, {50, 20, 0}, {50, 20, 100}, 60.0);
-    test::addBox(scene, 1, {30, 0, 30}, {70, 30, 31});
-    for (int k = 0; k < 5; ++k) test::addSphere(scene, 10 + k, {35 + 7.5 * k, 15, 60}, 3);
-    test::addSphere(scene, 20, {50, 38, 60}, 3.2);
-    test::addSphere(scene, 21, {100, 15, 60}, 3);
-    scene.finalize();
-    return scene;
-}
+// The wall of tests/culling/lazy_grid/lazy_grid_traversal_test.cpp.
+Scene wallScene() { return test::sphereWallScene(); }
 
 TEST(GlImageTarget, LazyGridsCullWhatTheWallHidesLikeOnTheSoftwareTarget) {
     const Scene scene = wallScene();

@@ -48,14 +48,8 @@ TEST(TradeSweep, AKnobOnlySomeAlgorithmsReadIsSweptForThemOnly) {
 
 // A wall hides five of seven spheres: vfc keeps all seven, the lazy grid two.
 Scene wallScene() {
-    Scene scene = test::scene3d();
-    test::setCamera(scene, {50, 20, 0}, {50, 20, 100}, 60.0);
-    test::addBox(scene, 1, {30, 0, 30}, {70, 30, 31});
-    for (int k = 0; k < 5; ++k) test::addSphere(scene, 10 + k, {35 + 7.5 * k, 15, 60}, 3);
-    test::addSphere(scene, 20, {50, 38, 60}, 3.2);
-    test::addSphere(scene, 21, {100, 15, 60}, 3);
+    Scene scene = test::sphereWallScene();
     scene.frames = 4;
-    scene.finalize();
     return scene;
 }
 

@@ -129,6 +129,19 @@ inline void setCamera(Scene& scene, const glm::dvec3& position, const glm::dvec3
     scene.camera.path = {CameraKey{0.0, position, target, {0.0, 1.0, 0.0}}};
 }
 
+// A wall seen face on, five spheres hidden behind it, one peeking over its top
+// edge, one beside it: an image-space culler keeps the wall and the two.
+inline Scene sphereWallScene() {
+    Scene scene = scene3d();
+    setCamera(scene, {50, 20, 0}, {50, 20, 100}, 60.0);
+    addBox(scene, 1, {30, 0, 30}, {70, 30, 31});
+    for (int k = 0; k < 5; ++k) addSphere(scene, 10 + k, {35 + 7.5 * k, 15, 60}, 3);
+    addSphere(scene, 20, {50, 38, 60}, 3.2);
+    addSphere(scene, 21, {100, 15, 60}, 3);
+    scene.finalize();
+    return scene;
+}
+
 // Resets `culler` for the scene and returns its PVS at time t.
 inline std::vector<int> cullIds(Culler& culler, const Scene& scene, double t = 0.0) {
     culler.reset(scene);
