@@ -31,6 +31,18 @@ void appendVector(std::string& out, const glm::dvec3& v, int dimensions) {
     out += ']';
 }
 
+// , "name": [ids]
+void appendIds(std::string& out, const char* name, const std::vector<int>& ids) {
+    out += ", \"";
+    out += name;
+    out += "\": [";
+    for (size_t i = 0; i < ids.size(); ++i) {
+        if (i) out += ", ";
+        out += std::to_string(ids[i]);
+    }
+    out += ']';
+}
+
 }  // namespace
 
 void appendFrameJson(std::string& line, int frame, double t, const char* algo,
@@ -50,7 +62,13 @@ void appendFrameJson(std::string& line, int frame, double t, const char* algo,
         if (i) line += ", ";
         line += std::to_string(result.pvs[i]);
     }
-    line += "], \"stats\": {\"cull_ms\": ";
+    line += "]";
+    // The oracle's sub-sample objects (their counts are among its counters).
+    if (result.stats.has(Counter::SubSampleUndecided)) {
+        appendIds(line, "sub_sample_visible", result.sub_sample_visible);
+        appendIds(line, "sub_sample_undecided", result.sub_sample_undecided);
+    }
+    line += ", \"stats\": {\"cull_ms\": ";
     appendNumber(line, result.stats.cull_ms);
     for (int c = 0; c < kCounterCount; ++c) {
         if (!result.stats.has(Counter(c))) continue;

@@ -12,7 +12,8 @@ int layerOf(ObjectState state) {
     case ObjectState::Culled: return 0;
     case ObjectState::Hidden: return 1;
     case ObjectState::Visible: return 2;
-    case ObjectState::FalseCulled: return 3;
+    case ObjectState::SubSample: return 3;
+    case ObjectState::FalseCulled: return 4;
     }
     return 0;
 }

@@ -80,6 +80,8 @@ float layerDepth(ObjectState state) {
             return 0.2f;
         case ObjectState::Visible:
             return 0.3f;
+        case ObjectState::SubSample:
+            return 0.35f;
         case ObjectState::FalseCulled:
             return 0.4f;
     }

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(cmake g++ make pkg-config libglfw3-dev libimgui-dev libglm-dev libstb-dev libcli11-dev
           nlohmann-json3-dev libtinyobjloader-dev libgtest-dev libbenchmark-dev libcgif-dev
-          xvfb xauth libgl1-mesa-dri libegl-dev libgl-dev)
+          libembree-dev xvfb xauth libgl1-mesa-dri libegl-dev libgl-dev)
 
 missing=()
 for p in "${packages[@]}"; do

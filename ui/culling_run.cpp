@@ -23,7 +23,7 @@ void runFrame(CullingRun& run, const RunContext& context, int frame, bool full) 
     run.known_until = std::max(run.known_until, frame);
     if (run.exact) timedCull(*run.exact, scene, run.culling_camera, t, run.exact_result);
     const FrameResult& exact = run.exactResult();
-    classifyObjects(scene, run.result.pvs, exact.pvs, run.states, run.false_culled);
+    classifyObjects(scene, run.result.pvs, exact, run.states, run.false_culled);
 
     FrameHistory& history = *context.history;
     const size_t slot = size_t(frame);

@@ -20,8 +20,11 @@ void swatch(Rgb c, const char* name, const char* meaning) {
 
 void drawLegendPanel(const FrameSnapshot& snapshot) {
     if (!ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    // Sub-sample objects exist only while the oracle asks about them.
+    const bool sub_sample = snapshot.exact && snapshot.exact->stats.has(Counter::SubSampleCandidates);
     for (int s = 0; s < kObjectStateCount; ++s) {
         const ObjectState state = ObjectState(s);
+        if (state == ObjectState::SubSample && !sub_sample) continue;
         swatch(objectStateColor(state), objectStateName(state), objectStateMeaning(state));
     }
     swatch(cullingCameraColor(), "camera",

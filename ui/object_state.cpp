@@ -12,6 +12,8 @@ const char* objectStateName(ObjectState state) {
             return "culled";
         case ObjectState::FalseCulled:
             return "false-culled";
+        case ObjectState::SubSample:
+            return "sub-sample";
     }
     return "?";
 }
@@ -26,6 +28,8 @@ const char* objectStateMeaning(ObjectState state) {
             return "culled, truly invisible";
         case ObjectState::FalseCulled:
             return "culled but exact sees it: BUG";
+        case ObjectState::SubSample:
+            return "culled; shows only between pixel centres, or undecided there";
     }
     return "?";
 }
@@ -42,6 +46,8 @@ Rgb objectStateColor(ObjectState state) {
             return swatchColor(Swatch::DimGrey);
         case ObjectState::FalseCulled:
             return swatchColor(Swatch::Vermillion);
+        case ObjectState::SubSample:
+            return swatchColor(Swatch::Orange);
     }
     return swatchColor(Swatch::White);
 }

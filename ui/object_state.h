@@ -14,10 +14,12 @@ enum class ObjectState : uint8_t {
     Hidden,       // in the PVS but the oracle sees none of it (conservative extra work)
     Culled,       // dropped by the culler and truly invisible
     FalseCulled,  // dropped by the culler although the oracle sees it: a culling bug
+    SubSample,    // dropped by the culler; the oracle saw it only between pixel centres, or
+                  // could not decide there (culling/oracle/exact_oracle.h, "Sub-sample objects")
 };
-constexpr int kObjectStateCount = 4;
+constexpr int kObjectStateCount = 5;
 
-const char* objectStateName(ObjectState state);  // "visible", "hidden", "culled", "false-culled"
+const char* objectStateName(ObjectState state);  // "visible", "hidden", "culled", "false-culled", "sub-sample"
 // One line saying what the state means, for the legend.
 const char* objectStateMeaning(ObjectState state);
 

@@ -4,7 +4,7 @@
 
 namespace gridcull {
 
-void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const std::vector<int>& exact,
+void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const FrameResult& exact,
                      std::vector<ObjectState>& states, std::vector<int>& false_culled) {
     states.assign(scene.objects.size(), ObjectState::Culled);
     for (int id : pvs) {
@@ -13,7 +13,7 @@ void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const std:
     }
     // Seen by the oracle: visible when the culler kept it, a false cull when not.
     false_culled.clear();
-    for (int id : exact) {
+    for (int id : exact.pvs) {
         const int index = scene.indexOf(id);
         if (index < 0) continue;
         ObjectState& state = states[size_t(index)];
@@ -25,6 +25,13 @@ void classifyObjects(const Scene& scene, const std::vector<int>& pvs, const std:
         }
     }
     std::sort(false_culled.begin(), false_culled.end());
+    for (const std::vector<int>* list : {&exact.sub_sample_visible, &exact.sub_sample_undecided}) {
+        for (int id : *list) {
+            const int index = scene.indexOf(id);
+            if (index >= 0 && states[size_t(index)] == ObjectState::Culled)
+                states[size_t(index)] = ObjectState::SubSample;
+        }
+    }
 }
 
 }  // namespace gridcull

@@ -28,7 +28,7 @@ enum class Swatch : uint8_t {
     SkyBlue,        // hidden objects (in the PVS, not seen); in overlays, picked things (rgvc's occluder)
     Vermillion,     // false culls, and nothing else: never in an overlay
     Yellow,         // the culling camera: its frustum, line of sight (and rgvc's seeds on it), what it sees of a box
-    Orange,         // a family's own, keyed in its legend (rgvc I, lazy partially free, TBVs half-way, ...)
+    Orange,         // sub-sample objects (the oracle cannot decide them); in overlays a family's own, keyed in its legend (rgvc I, lazy partially free, TBVs half-way, ...)
     BluishGreen,    // a family's own, keyed in its legend (rgvc traversal, free cells, visible nodes, ...)
     ReddishPurple,  // a family's own, keyed in its legend (rgvc T, full cells, expiring TBVs, ...)
     NearBlack,      // opaque things (an occluder matrix), dark backings

@@ -48,6 +48,14 @@ void drawStatsPanel(const FrameSnapshot& snapshot) {
         row("exact visible", "%.0f", exact);
         row("false culls", "%.0f", false_culls,
             false_culls > 0 ? toU32(objectStateColor(ObjectState::FalseCulled)) : 0);
+        // What the oracle saw or could not decide between pixel centres, while
+        // it asks (--oracle-refine 1): shown, not hidden.
+        if (snapshot.exact->stats.has(Counter::SubSampleCandidates)) {
+            const int sub_sample = int(snapshot.exact->sub_sample_visible.size() +
+                                       snapshot.exact->sub_sample_undecided.size());
+            row("sub-sample", "%.0f", sub_sample,
+                sub_sample > 0 ? toU32(objectStateColor(ObjectState::SubSample)) : 0);
+        }
         if (snapshot.show_timings) {
             row("cull ms", "%.3f", result.stats.cull_ms);
             row("draw ms", "%.3f", snapshot.draw_ms);

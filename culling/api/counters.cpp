@@ -58,6 +58,15 @@ constexpr std::array<CounterInfo, kCounterCount> kTable = {{
     {Counter::QueriesHidden, "queries_hidden",
      "occlusion queries answered hidden (the ones that culled something; the others cost "
      "a query and saved nothing)"},
+    {Counter::SubSampleCandidates, "sub_sample_candidates",
+     "objects no pixel centre saw whose bounds reach a pixel not proven covered in front of "
+     "them: the oracle casts finer rays there"},
+    {Counter::SubSampleVisible, "sub_sample_visible",
+     "objects the oracle's finer rays saw and no pixel centre did: visible between centres"},
+    {Counter::SubSampleUndecided, "sub_sample_undecided",
+     "candidates no finer ray saw: the oracle cannot tell whether they show below its "
+     "finest rays (neither visible nor hidden)"},
+    {Counter::RefineRays, "refine_rays", "finer rays the oracle cast (Embree)"},
 }};
 
 constexpr bool inCounterOrder() {

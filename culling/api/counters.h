@@ -44,6 +44,10 @@ enum class Counter : uint8_t {
     CoherenceSkips,
     PartsDrawn,
     QueriesHidden,
+    SubSampleCandidates,
+    SubSampleVisible,
+    SubSampleUndecided,
+    RefineRays,
     Count
 };
 constexpr int kCounterCount = int(Counter::Count);

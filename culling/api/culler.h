@@ -18,6 +18,12 @@ namespace gridcull {
 struct FrameResult {
     std::vector<int> pvs;  // potentially visible object ids, sorted ascending
     CullStats stats;
+    // The exact oracle's "sub-sample" objects (exact_oracle.h), ids ascending,
+    // none in pvs: those its finer rays saw between pixel centres (visible, but
+    // on no pixel of an image at its resolution), and those they could not
+    // decide. Empty for every other culler.
+    std::vector<int> sub_sample_visible;
+    std::vector<int> sub_sample_undecided;
 };
 
 class Culler {

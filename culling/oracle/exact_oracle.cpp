@@ -23,6 +23,10 @@ void ExactOracle::reset(const Scene& scene) {
     order_.clear();
     order_.reserve(scene.objects.size());
     seen_.assign(scene.objects.size(), 0);
+    drawn_.assign(scene.objects.size(), 0);
+    undecided_.clear();
+    undecided_.reserve(scene.objects.size());
+    refiner_.reset();
     shifts_.assign(scene.objects.size(), glm::dvec3(0.0));
     size_t largest_mesh = 0;
     for (const SceneObject& object : scene.objects)
@@ -40,9 +44,12 @@ void ExactOracle::reset(const Scene& scene) {
 void ExactOracle::cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
     out.stats = CullStats{};
     out.pvs.clear();
+    out.sub_sample_visible.clear();
+    out.sub_sample_undecided.clear();
     // Sized in reset(); these only grow when cull() is handed a larger scene.
     if (seen_.size() != scene.objects.size()) {
         seen_.resize(scene.objects.size());
+        drawn_.resize(scene.objects.size());
         shifts_.resize(scene.objects.size());
     }
     std::fill(seen_.begin(), seen_.end(), char(0));
@@ -76,11 +83,21 @@ void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, Fra
     for (const auto& [key, i] : order_) {
         const SceneObject& object = scene.objects[size_t(i)];
         const glm::dvec3& shift = shifts_[size_t(i)];
-        tested += id_buffer_.drawObject(i, object, shift) ? 1 : 0;
+        drawn_[size_t(i)] = id_buffer_.drawObject(i, object, shift) ? 1 : 0;
+        tested += drawn_[size_t(i)];
     }
     id_buffer_.markVisible(seen_);
     out.stats.set(Counter::ObjectsTested, tested);
     out.stats.set(Counter::PixelsSampled, int64_t(width) * height);
+    if (!options_.refine) return;
+    SubsampleCounts counts;
+    refiner_.refine(scene, camera, shifts_, id_buffer_, order_, drawn_, seen_, undecided_, counts);
+    for (const int i : undecided_) out.sub_sample_undecided.push_back(scene.objects[size_t(i)].id);
+    std::sort(out.sub_sample_undecided.begin(), out.sub_sample_undecided.end());
+    out.stats.set(Counter::SubSampleCandidates, counts.candidates);
+    out.stats.set(Counter::SubSampleVisible, counts.found);
+    out.stats.set(Counter::SubSampleUndecided, counts.undecided);
+    out.stats.set(Counter::RefineRays, counts.rays);
 }
 
 void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
@@ -124,9 +141,14 @@ void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, Fra
 }
 
 void ExactOracle::collect(const Scene& scene, FrameResult& out) {
-    for (size_t i = 0; i < seen_.size(); ++i)
-        if (seen_[i]) out.pvs.push_back(scene.objects[i].id);
+    for (size_t i = 0; i < seen_.size(); ++i) {
+        if (seen_[i] == SubsampleRefiner::kSeenByRay)
+            out.sub_sample_visible.push_back(scene.objects[i].id);
+        else if (seen_[i])
+            out.pvs.push_back(scene.objects[i].id);
+    }
     std::sort(out.pvs.begin(), out.pvs.end());
+    std::sort(out.sub_sample_visible.begin(), out.sub_sample_visible.end());
 }
 
 }  // namespace gridcull

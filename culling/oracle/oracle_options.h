@@ -24,6 +24,7 @@ constexpr int kMaxOracleRaysPerTurn = 1 << 22;
 struct OracleOptions {
     int resolution = kDefaultOracleResolution;  // 3D: pixels on the long side of the ID buffer
     int rays_per_turn = 16384;                  // 2D: rays of the angular sweep per full turn
+    int refine = 0;  // 3D: 1 asks about the objects that may show between pixel centres
 };
 
 const KnobTable<OracleOptions>& oracleKnobs();

@@ -269,6 +269,17 @@ bool IdDepthBuffer::drawSphere(int index, const glm::dvec3& center, double radiu
     return true;
 }
 
+bool IdDepthBuffer::screenBounds(const Aabb& box, ScreenRange& cols, ScreenRange& rows,
+                                 double& z_min) const {
+    if (box.contains(eye_)) {
+        cols = {0, width_ - 1};
+        rows = {0, height_ - 1};
+        z_min = near_;
+        return true;
+    }
+    return boxCandidates(box, cols, rows, z_min);
+}
+
 bool IdDepthBuffer::boxCandidates(const Aabb& box, ScreenRange& cols, ScreenRange& rows,
                                   double& z_min) const {
     z_min = std::numeric_limits<double>::infinity();

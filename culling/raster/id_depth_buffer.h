@@ -135,6 +135,13 @@ public:
     // and the pixel rectangle that the last draw call returning true may have
     // written (a call returning false writes nothing and leaves it as it was).
     const double* depthRow(int py) const { return depth_.data() + size_t(py) * size_t(width_); }
+    // Row py's object indices (-1 where nothing was drawn); needs setWriteIds(true).
+    const int32_t* indexRow(int py) const { return index_.data() + size_t(py) * size_t(width_); }
+    // The pixels whose squares the part of `box` at depth >= near may cover
+    // (widened by up to one pixel), and that part's least depth; false when the
+    // box lies wholly outside [near, far] or off screen. A box containing the
+    // eye covers the whole screen from depth near.
+    bool screenBounds(const Aabb& box, ScreenRange& cols, ScreenRange& rows, double& z_min) const;
     ScreenRange lastDrawCols() const { return last_cols_; }
     ScreenRange lastDrawRows() const { return last_rows_; }
 

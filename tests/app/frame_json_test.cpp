@@ -42,6 +42,24 @@ TEST(FrameJson, TwoDimensionalCameraHasTwoNumbers) {
     const auto j = nlohmann::json::parse(line);
     EXPECT_EQ(j["camera"]["position"].size(), 2u);
     EXPECT_TRUE(j["pvs"].empty());
+    EXPECT_FALSE(j.contains("sub_sample_visible"));  // only an oracle that asks has them
+}
+
+TEST(FrameJson, TheOraclesSubSampleObjectsAreListed) {
+    Camera cam;
+    FrameResult r;
+    r.pvs = {1};
+    r.sub_sample_visible = {4};
+    r.sub_sample_undecided = {2, 7};
+    r.stats.set(Counter::SubSampleCandidates, 3);
+    r.stats.set(Counter::SubSampleVisible, 1);
+    r.stats.set(Counter::SubSampleUndecided, 2);
+    std::string line;
+    appendFrameJson(line, 0, 0.0, "exact", cam, r);
+    const auto j = nlohmann::json::parse(line);
+    EXPECT_EQ(j["sub_sample_visible"], nlohmann::json({4}));
+    EXPECT_EQ(j["sub_sample_undecided"], nlohmann::json({2, 7}));
+    EXPECT_EQ(j["stats"]["sub_sample_undecided"], 2);
 }
 
 }  // namespace

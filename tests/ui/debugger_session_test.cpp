@@ -209,7 +209,7 @@ TEST(DebuggerSession, BackgroundSeeksAdoptOrCancelCleanly) {
 
 TEST(ObjectStates, ComparesPvsWithTheOracle) {
     Scene scene;
-    for (int id : {4, 1, 3, 2}) {
+    for (int id : {4, 1, 3, 2, 5, 6}) {
         SceneObject object;
         object.id = id;
         object.radius = 1.0;
@@ -218,15 +218,25 @@ TEST(ObjectStates, ComparesPvsWithTheOracle) {
     scene.finalize();
     std::vector<ObjectState> states;
     std::vector<int> false_culled;
-    classifyObjects(scene, {1, 2}, {2, 3}, states, false_culled);
-    ASSERT_EQ(states.size(), 4u);
+    // 5 and 6 are the oracle's sub-sample objects: 5 culled, 6 kept.
+    FrameResult exact;
+    exact.pvs = {2, 3};
+    exact.sub_sample_visible = {5};
+    exact.sub_sample_undecided = {6};
+    classifyObjects(scene, {1, 2, 6}, exact, states, false_culled);
+    ASSERT_EQ(states.size(), 6u);
     EXPECT_EQ(states[size_t(scene.indexOf(1))], ObjectState::Hidden);
     EXPECT_EQ(states[size_t(scene.indexOf(2))], ObjectState::Visible);
     EXPECT_EQ(states[size_t(scene.indexOf(3))], ObjectState::FalseCulled);
     EXPECT_EQ(states[size_t(scene.indexOf(4))], ObjectState::Culled);
+    EXPECT_EQ(states[size_t(scene.indexOf(5))], ObjectState::SubSample);
+    EXPECT_EQ(states[size_t(scene.indexOf(6))], ObjectState::Hidden);
     EXPECT_EQ(false_culled, std::vector<int>{3});
     // Unknown ids are ignored rather than trusted.
-    classifyObjects(scene, {1, 99}, {99}, states, false_culled);
+    exact.pvs = {99};
+    exact.sub_sample_visible = {98};
+    exact.sub_sample_undecided.clear();
+    classifyObjects(scene, {1, 99}, exact, states, false_culled);
     EXPECT_TRUE(false_culled.empty());
 }
 

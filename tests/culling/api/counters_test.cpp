@@ -21,7 +21,8 @@ TEST(Counters, AreTheOutputNamesInSnakeCaseWithAMeaningEach) {
         "objects_tested", "pixels_sampled", "occlusion_tests",  "pixels_read",
         "cell_updates",   "bvh_rebuilds",   "probability_skips", "state_fetches",
         "tbv_messages",   "octree_update_nodes", "occlusion_queries", "query_batches",
-        "coherence_skips", "parts_drawn", "queries_hidden"};
+        "coherence_skips", "parts_drawn", "queries_hidden", "sub_sample_candidates",
+        "sub_sample_visible", "sub_sample_undecided", "refine_rays"};
     ASSERT_EQ(int(expected.size()), kCounterCount);
     std::set<std::string> seen;
     for (int i = 0; i < kCounterCount; ++i) {

@@ -1,0 +1,218 @@
+#include "culling/oracle/subsample_refiner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "culling/scene/ray_intersect.h"
+
+namespace gridcull {
+
+// Level 12 skips the points of level 4 it contains: a = 3 j + 1.
+static_assert(SubsampleRefiner::kLastLevel == 3 * SubsampleRefiner::kFirstLevel);
+
+glm::dvec3 SubsampleRefiner::View::ray(double x, double y) const {
+    // The rasterizer's mapping (id_depth_buffer.h) at a continuous pixel point.
+    const double u = (2.0 * x / width - 1.0) * tan_x;
+    const double v = (1.0 - 2.0 * y / height) * tan_y;
+    return forward + u * right + v * up;
+}
+
+bool SubsampleRefiner::mayReach(const View& view, const glm::dvec3 corners[8], bool sphere,
+                                const glm::dvec3& center, double radius, int px, int py) const {
+    // The pixel's pyramid from the eye: u0 z <= x <= u1 z and v1 z <= y <= v0 z
+    // in view space, as four planes through the eye with inward normals.
+    const double u0 = (2.0 * px / view.width - 1.0) * view.tan_x;
+    const double u1 = (2.0 * (px + 1) / view.width - 1.0) * view.tan_x;
+    const double v0 = (1.0 - 2.0 * py / view.height) * view.tan_y;
+    const double v1 = (1.0 - 2.0 * (py + 1) / view.height) * view.tan_y;
+    const glm::dvec3 normals[4] = {{1, 0, -u0}, {-1, 0, u1}, {0, -1, v0}, {0, 1, -v1}};
+    for (const glm::dvec3& n : normals) {
+        if (sphere) {
+            if (glm::dot(n, center) < -radius * glm::length(n)) return false;
+            continue;
+        }
+        bool any_inside = false;
+        for (int c = 0; c < 8 && !any_inside; ++c) any_inside = glm::dot(n, corners[c]) >= 0.0;
+        if (!any_inside) return false;
+    }
+    return true;
+}
+
+double SubsampleRefiner::coverDepth(const View& view, const Scene& scene,
+                                   const std::vector<glm::dvec3>& shifts,
+                                   const IdDepthBuffer& buffer, int px, int py) {
+    constexpr double kOpen = std::numeric_limits<double>::infinity();
+    if (px == 0 || py == 0 || px + 1 == view.width || py + 1 == view.height) return kOpen;
+    const size_t p = size_t(py) * size_t(view.width) + size_t(px);
+    if (cover_frame_[p] == frame_) return cover_[p];
+    int ids[9];
+    int distinct = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        const int32_t* row = buffer.indexRow(py + dy);
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int id = row[px + dx];
+            if (id >= 0 && std::find(ids, ids + distinct, id) == ids + distinct) ids[distinct++] = id;
+        }
+    }
+    double best = kOpen;
+    for (int k = 0; k < distinct; ++k) {
+        const SceneObject& object = scene.objects[size_t(ids[k])];
+        const glm::dvec3& shift = shifts[size_t(ids[k])];
+        if (object.shape != ShapeKind::Sphere && object.shape != ShapeKind::Box) continue;
+        double farthest = 0.0;
+        for (int dy = -1; dy <= 1 && farthest < best; ++dy) {
+            for (int dx = -1; dx <= 1 && farthest < best; ++dx) {
+                const glm::dvec3 dir = view.ray(px + dx + 0.5, py + dy + 0.5);
+                double s0, s1, s;
+                const bool line = object.shape == ShapeKind::Sphere
+                                      ? lineSphere(view.eye, dir, object.center + shift,
+                                                   object.radius, s0, s1)
+                                      : lineBox(view.eye, dir, object.box.translated(shift), s0, s1);
+                if (!line || !solidEntry(s0, s1, view.near, view.far, s)) farthest = kOpen;
+                else farthest = std::max(farthest, s);
+            }
+        }
+        best = std::min(best, farthest);
+    }
+    cover_[p] = best;
+    cover_frame_[p] = frame_;
+    return best;
+}
+
+int SubsampleRefiner::nearestAt(const View& view, const Scene& scene,
+                                const std::vector<glm::dvec3>& shifts, double x, double y) const {
+    const glm::dvec3 dir = view.ray(x, y);
+    // The rasterizer gives depth near to a sphere or box that holds the eye or
+    // the ray's near-plane point, the first drawn winning; Embree's rays start
+    // at near and would see such a solid only where they leave it.
+    const glm::dvec3 near_point = view.eye + view.near * dir;
+    for (const int i : near_solids_) {
+        const SceneObject& object = scene.objects[size_t(i)];
+        const glm::dvec3& shift = shifts[size_t(i)];
+        if (object.shape == ShapeKind::Sphere) {
+            const glm::dvec3 c = object.center + shift;
+            const double r2 = object.radius * object.radius;
+            if (glm::dot(near_point - c, near_point - c) <= r2 ||
+                glm::dot(view.eye - c, view.eye - c) <= r2)
+                return i;
+        } else {
+            const Aabb box = object.box.translated(shift);
+            if (box.contains(near_point) || box.contains(view.eye)) return i;
+        }
+    }
+    double depth = 0.0;
+    return rays_.nearest(dir, view.near, view.far, depth);
+}
+
+void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
+                              const std::vector<glm::dvec3>& shifts, const IdDepthBuffer& buffer,
+                              const std::vector<std::pair<double, int>>& order,
+                              const std::vector<char>& drawn, std::vector<char>& seen,
+                              std::vector<int>& undecided, SubsampleCounts& counts) {
+    undecided.clear();
+    View view;
+    view.eye = camera.position;
+    camera.basis(view.right, view.up, view.forward);
+    view.tan_y = std::tan(glm::radians(camera.fov_deg) * 0.5);
+    view.tan_x = view.tan_y * camera.aspect;
+    view.near = camera.near;
+    view.far = camera.far;
+    view.width = buffer.width();
+    view.height = buffer.height();
+    const size_t pixels = size_t(view.width) * size_t(view.height);
+    if (level_.size() != pixels) {
+        level_.assign(pixels, 0);
+        touched_.clear();
+        cover_.assign(pixels, 0.0);
+        cover_frame_.assign(pixels, 0);
+        frame_ = 0;
+    }
+    if (++frame_ == 0) {  // the stamps wrapped: none of them may look current
+        std::fill(cover_frame_.begin(), cover_frame_.end(), 0u);
+        frame_ = 1;
+    }
+    for (const size_t p : touched_) level_[p] = 0;
+    touched_.clear();
+    gate_.build(buffer);
+
+    near_solids_.clear();
+    for (const auto& [key, i] : order) {
+        if (key > camera.near) break;  // order is by nearest depth
+        const ShapeKind shape = scene.objects[size_t(i)].shape;
+        if (shape == ShapeKind::Sphere || shape == ShapeKind::Box) near_solids_.push_back(i);
+    }
+
+    bool placed = false;
+    for (const auto& [key, i] : order) {
+        if (seen[size_t(i)] || !drawn[size_t(i)]) continue;
+        const SceneObject& object = scene.objects[size_t(i)];
+        const glm::dvec3& shift = shifts[size_t(i)];
+        const bool sphere = object.shape == ShapeKind::Sphere;
+        const Aabb bounds = sphere ? Aabb{object.center + shift - object.radius,
+                                          object.center + shift + object.radius}
+                                   : object.bounds.translated(shift);
+        ScreenRange cols, rows;
+        double z_min = 0.0;
+        if (!buffer.screenBounds(bounds, cols, rows, z_min)) continue;
+        const double z = std::max(key, z_min);
+        if (!gate_.mayShow(cols, rows, z)) continue;
+
+        // In view space, as the pyramid test wants them.
+        auto toView = [&](const glm::dvec3& p) {
+            const glm::dvec3 rel = p - view.eye;
+            return glm::dvec3(glm::dot(rel, view.right), glm::dot(rel, view.up),
+                              glm::dot(rel, view.forward));
+        };
+        glm::dvec3 corners[8];
+        for (int c = 0; c < 8; ++c) corners[c] = toView(bounds.corner(c));
+        const glm::dvec3 center = toView(object.center + shift);
+        pixels_.clear();
+        for (int py = rows.lo; py <= rows.hi; ++py)
+            for (int px = cols.lo; px <= cols.hi; ++px)
+                if (gate_.gate(px, py) >= z &&
+                    mayReach(view, corners, sphere, center, object.radius, px, py) &&
+                    coverDepth(view, scene, shifts, buffer, px, py) >= z)
+                    pixels_.push_back(size_t(py) * size_t(view.width) + size_t(px));
+        if (pixels_.empty()) continue;
+        ++counts.candidates;
+
+        if (!placed) {
+            rays_.place(scene, shifts, camera.position);
+            placed = true;
+        }
+        for (const int level : {kFirstLevel, kLastLevel}) {
+            for (const size_t p : pixels_) {
+                if (seen[size_t(i)] || counts.rays >= kMaxRaysPerFrame) break;
+                if (level_[p] >= level) continue;
+                const bool skip_first = level_[p] == kFirstLevel;
+                if (level_[p] == 0) touched_.push_back(p);
+                level_[p] = uint8_t(level);
+                const int px = int(p % size_t(view.width)), py = int(p / size_t(view.width));
+                for (int b = 0; b < level; ++b) {
+                    for (int a = 0; a < level; ++a) {
+                        if (skip_first && a % 3 == 1 && b % 3 == 1) continue;
+                        const int hit = nearestAt(view, scene, shifts, px + (a + 0.5) / level,
+                                                  py + (b + 0.5) / level);
+                        ++counts.rays;
+                        if (hit >= 0 && !seen[size_t(hit)]) {
+                            seen[size_t(hit)] = kSeenByRay;
+                            ++counts.found;
+                        }
+                    }
+                }
+            }
+        }
+        if (!seen[size_t(i)]) undecided.push_back(i);
+    }
+    // A candidate left undecided may have been found by a later one's rays.
+    undecided.erase(std::remove_if(undecided.begin(), undecided.end(),
+                                   [&](int i) { return seen[size_t(i)] != 0; }),
+                    undecided.end());
+    counts.undecided = int64_t(undecided.size());
+}
+
+}  // namespace gridcull
