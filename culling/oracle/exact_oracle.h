@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "culling/api/culler.h"
+#include "culling/oracle/exact_oracle_2d.h"
 #include "culling/oracle/exact_oracle_sweep.h"
 #include "culling/oracle/oracle_options.h"
 #include "culling/raster/id_depth_buffer.h"
@@ -54,7 +55,7 @@ namespace gridcull {
 
 class ExactOracle final : public Culler {
 public:
-    // Options are clamped to [1, kMaxOracleResolution] and [1, kMaxOracleRaysPerTurn].
+    // Options are clamped to [1, kMaxOracleResolution] and [0, kMaxOracleRaysPerTurn].
     explicit ExactOracle(const OracleOptions& options = {});
     const char* name() const override { return "exact"; }
     void reset(const Scene& scene) override;
@@ -69,12 +70,16 @@ public:
 private:
     void cull3d(const Scene& scene, const Camera& camera, double t, FrameResult& out);
     void cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out);
+    // Draws every object front to back on `canvas` (the envelope or the sweep).
+    template <class Canvas>
+    int64_t draw2d(Canvas& canvas, const Scene& scene, double t);
     // Fills out.pvs from the indices marked in seen_, sorted by id.
     void collect(const Scene& scene, FrameResult& out);
 
     OracleOptions options_;
     IdDepthBuffer id_buffer_;
-    OracleAngularSweep sweep_;
+    AngularEnvelope envelope_;  // 2D, rays_per_turn == 0
+    OracleAngularSweep sweep_;  // 2D, rays_per_turn > 0
     std::vector<std::pair<double, int>> order_;  // (nearest possible depth, object index)
     std::vector<char> seen_;                     // per object index
     std::vector<glm::dvec3> shifts_;             // per object index: displacement at t
