@@ -20,6 +20,14 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // ray finds the object missing, and no rounding of the ends can lose a sliver.
 constexpr double kIntervalMargin = 1e-12;
 
+// Whether two distances along one ray are the same surface: two objects whose
+// boundaries coincide (e.g. overlapping boxes sharing a face) compute it from
+// different segments and round differently. The brute-force reference of the
+// oracle tests uses the same relative tolerance.
+bool sameDistance(double a, double b) {
+    return std::abs(a - b) <= AngularEnvelope::kTieTolerance * std::max(a, b);
+}
+
 }  // namespace
 
 void AngularEnvelope::reserve(size_t objects, size_t vertices, size_t largest) {
@@ -40,7 +48,7 @@ void AngularEnvelope::reserve(size_t objects, size_t vertices, size_t largest) {
 void AngularEnvelope::begin(const Camera& camera) {
     frame_.set(camera, glm::radians(std::clamp(camera.fov_deg, 0.0, 360.0)));
     pieces_.clear();
-    pieces_.push_back({0.0, frame_.fov, -1, kInfinity});
+    pieces_.push_back({0.0, frame_.fov, -1, -1, kInfinity});
     filled_ = false;
     rays_ = 0;
 }
@@ -80,7 +88,7 @@ bool AngularEnvelope::draw(int index, const AngularShape& shape) {
     if (extent.contains_camera) {
         if (!filled_) {
             pieces_.clear();
-            pieces_.push_back({0.0, frame_.fov, index, 0.0});
+            pieces_.push_back({0.0, frame_.fov, index, -1, 0.0});
             filled_ = true;
         }
         return true;
@@ -110,7 +118,7 @@ bool AngularEnvelope::draw(int index, const AngularShape& shape) {
 
 void AngularEnvelope::push(const Piece& piece) {
     if (!scratch_.empty() && scratch_.back().owner == piece.owner &&
-        scratch_.back().end == piece.begin) {
+        scratch_.back().tied == piece.tied && scratch_.back().end == piece.begin) {
         scratch_.back().end = piece.end;
         return;
     }
@@ -135,7 +143,8 @@ void AngularEnvelope::insert(int index, double from, double to) {
     for (size_t j = first; j < last; ++j) {
         const Piece piece = pieces_[j];
         // Wholly behind the piece's owner (ties go to the owner), or not under it.
-        if (piece.end <= from || piece.begin >= to || piece.bound <= near || piece.owner == index) {
+        if (piece.end <= from || piece.begin >= to || piece.bound * (1.0 + kTieTolerance) < near ||
+            piece.owner == index) {
             push(piece);
             continue;
         }
@@ -150,8 +159,8 @@ void AngularEnvelope::insert(int index, double from, double to) {
 void AngularEnvelope::split(const Piece& piece, int index, double from, double to) {
     const AngularShape& shape = shapes_[size_t(index)];
     const AngularExtent& extent = extents_[size_t(index)];
-    const Piece mine{0.0, 0.0, index, std::min(extent.max_distance, frame_.far)};
-    if (from > piece.begin) push({piece.begin, from, piece.owner, piece.bound});
+    const double bound = std::min(extent.max_distance, frame_.far);
+    if (from > piece.begin) push({piece.begin, from, piece.owner, piece.tied, piece.bound});
 
     events_.clear();
     events_.push_back(from);
@@ -170,18 +179,22 @@ void AngularEnvelope::split(const Piece& piece, int index, double from, double t
     for (size_t k = 1; k < events_.size(); ++k) {
         const double end = events_[k];
         if (!(end > begin)) continue;
-        bool wins = false;
+        Piece next{begin, end, piece.owner, piece.tied, piece.bound};
         if (end - begin >= kMinPieceWidth) {
             const glm::dvec3 dir = frame_.direction(0.5 * (begin + end));
             ++rays_;
             const double d = rayDistance(shape, frame_, dir);
-            wins = d < kInfinity && (!owner || d < rayDistance(*owner, frame_, dir));
+            const double d_owner = owner ? rayDistance(*owner, frame_, dir) : kInfinity;
+            if (d < kInfinity && d_owner < kInfinity && sameDistance(d, d_owner)) {
+                if (next.tied < 0) next.tied = index;  // the owner keeps the piece
+            } else if (d < d_owner) {
+                next = {begin, end, index, -1, bound};
+            }
         }
-        push(wins ? Piece{begin, end, index, mine.bound}
-                  : Piece{begin, end, piece.owner, piece.bound});
+        push(next);
         begin = end;
     }
-    if (to < piece.end) push({to, piece.end, piece.owner, piece.bound});
+    if (to < piece.end) push({to, piece.end, piece.owner, piece.tied, piece.bound});
 }
 
 void AngularEnvelope::markVisible(std::vector<char>& seen) const {
@@ -198,6 +211,12 @@ void AngularEnvelope::markVisible(std::vector<char>& seen) const {
             seen[size_t(owner)] = 1;
         }
         i = j;
+    }
+    // A tied object is seen where it shares the owner's surface over a whole piece.
+    for (const Piece& piece : pieces_) {
+        if (piece.tied < 0 || piece.end - piece.begin < kMinPieceWidth) continue;
+        assert(size_t(piece.tied) < seen.size());
+        seen[size_t(piece.tied)] = 1;
     }
 }
 

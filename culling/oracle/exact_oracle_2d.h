@@ -24,8 +24,11 @@
 //    that narrow does not make its owner visible.
 //  - An object met only at a single angle (a tangent, two silhouettes touching
 //    exactly as seen from the camera) covers a set of measure zero: not visible.
-//  - Ties: where two objects are at the same distance along a whole interval the
-//    one drawn first (nearer lower bound, then lower index) keeps it.
+//  - Ties: where two objects are at the same distance (within a relative
+//    kTieTolerance) along a whole interval, both are seen: their boundaries
+//    coincide there (e.g. overlapping boxes sharing a face), and a point of that
+//    boundary belongs to both closed solids. The piece keeps the first drawn as
+//    owner and the second as `tied`; a third object tied there is not reported.
 //  - A camera inside or on the boundary of a solid sees only it; the first such
 //    object drawn wins, as in the sampled sweep.
 // Cost: the pieces visited per object, times (edges of the owner x edges of the
@@ -48,6 +51,9 @@ public:
     // that are themselves rounded), so narrower intervals cannot be told apart
     // from a single angle.
     static constexpr double kMinPieceWidth = 64 * 8.881784197001252e-16;
+    // Relative difference below which two distances along a ray are one surface
+    // (coincident faces of overlapping objects, computed from different segments).
+    static constexpr double kTieTolerance = 1e-9;
 
     // Room for `objects` objects with `vertices` polygon and box vertices in all, the
     // largest shape having `largest` vertices.
@@ -74,6 +80,7 @@ private:
     struct Piece {
         double begin, end;
         int32_t owner;  // -1: no object
+        int32_t tied;   // an object at the owner's distance over the whole piece; -1: none
         double bound;   // the owner's farthest distance within far; infinity for none
     };
 

@@ -217,5 +217,17 @@ TEST(OracleExact2d, CameraInTheChannelOfANonConvexPolygon) {
     }
 }
 
+// Two overlapping boxes whose left faces lie on one line (walls-2d's walls 0 and
+// 3): where the faces coincide both boxes are at the same distance, so both are
+// seen, though rounding would hand each ray to one or the other.
+TEST(OracleExact2d, CoincidentFacesShowBothObjects) {
+    const glm::dvec3 eye{10, 25, 0};
+    Scene scene = looking(eye, {10, 100, 0});
+    addBox(scene, 0, {20, 0, 0}, {22, 60, 0});
+    addBox(scene, 3, {20, 58, 0}, {80, 60, 0});
+    scene.finalize();
+    EXPECT_EQ(exactIds(scene), (V{0, 3}));
+}
+
 }  // namespace
 }  // namespace gridcull
