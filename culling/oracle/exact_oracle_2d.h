@@ -15,7 +15,9 @@
 // so which of A and B is nearer is the same for every ray; one ray through the
 // middle of each elementary interval, intersected exactly
 // (culling/scene/ray_intersect.h), decides it for the whole interval. Adjacent
-// pieces of one owner merge. An object is visible iff it owns a piece at the end.
+// pieces of one owner merge. An object is visible iff it owns a piece at the end
+// (or ties its owner, below). Source: none published; this is the classic lower
+// envelope of curves in angle (as in 2D hidden-line removal), written for the oracle.
 //
 // Precision and decisions:
 //  - Exact up to floating point: event angles carry a few ulps of error, so an
