@@ -7,7 +7,7 @@ namespace gridcull {
 
 ExactOracle::ExactOracle(const OracleOptions& options) : options_(options) {
     options_.resolution = std::clamp(options_.resolution, 1, kMaxOracleResolution);
-    options_.rays_per_turn = std::clamp(options_.rays_per_turn, 1, kMaxOracleRaysPerTurn);
+    options_.rays_per_turn = std::clamp(options_.rays_per_turn, 0, kMaxOracleRaysPerTurn);
 }
 
 void ExactOracle::imageSize(int resolution, double aspect, int& width, int& height) {
@@ -32,7 +32,15 @@ void ExactOracle::reset(const Scene& scene) {
     for (const SceneObject& object : scene.objects)
         if (object.mesh) largest_mesh = std::max(largest_mesh, object.mesh->vertices.size());
     id_buffer_.reserveMeshVertices(largest_mesh);
-    if (scene.dimensions == 2) {
+    if (scene.dimensions == 2 && options_.rays_per_turn == 0) {
+        size_t vertices = 0, largest = 0;
+        for (const SceneObject& object : scene.objects) {
+            const size_t n = object.shape == ShapeKind::Polygon ? object.points.size() : 4;
+            vertices += n;
+            largest = std::max(largest, n);
+        }
+        envelope_.reserve(scene.objects.size(), vertices, largest);
+    } else if (scene.dimensions == 2) {
         sweep_.resize(rayCount(options_.rays_per_turn, scene.camera.fov_deg), scene.camera.fov_deg);
     } else {
         int width, height;
@@ -101,18 +109,35 @@ void ExactOracle::cull3d(const Scene& scene, const Camera& camera, double t, Fra
 }
 
 void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, FrameResult& out) {
-    sweep_.resize(rayCount(options_.rays_per_turn, camera.fov_deg), camera.fov_deg);
-    sweep_.begin(camera);
+    int64_t tested = 0, rays = 0;
+    if (options_.rays_per_turn == 0) {
+        envelope_.begin(camera);
+        tested = draw2d(envelope_, scene, t);
+        envelope_.markVisible(seen_);
+        rays = envelope_.raysCast();
+    } else {
+        sweep_.resize(rayCount(options_.rays_per_turn, camera.fov_deg), camera.fov_deg);
+        sweep_.begin(camera);
+        tested = draw2d(sweep_, scene, t);
+        sweep_.markVisible(seen_);
+        rays = sweep_.rays();
+    }
+    out.stats.set(Counter::ObjectsTested, tested);
+    out.stats.set(Counter::PixelsSampled, rays);
+}
 
+template <class Canvas>
+int64_t ExactOracle::draw2d(Canvas& canvas, const Scene& scene, double t) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const glm::dvec3 shift = scene.displacementAt(object, t);
         shifts_[i] = shift;
         const double key = object.shape == ShapeKind::Sphere
-                               ? sweep_.minDistanceOfCircle(object.center + shift, object.radius)
-                               : sweep_.minDistanceOfBox(object.bounds.translated(shift));
+                               ? canvas.minDistanceOfCircle(object.center + shift, object.radius)
+                               : canvas.minDistanceOfBox(object.bounds.translated(shift));
         order_.emplace_back(key, int(i));
     }
+    // Front to back: hidden parts are skipped, and ties go to the nearer bound.
     std::sort(order_.begin(), order_.end());
 
     int64_t tested = 0;
@@ -122,22 +147,20 @@ void ExactOracle::cull2d(const Scene& scene, const Camera& camera, double t, Fra
         bool drawn = false;
         switch (object.shape) {
             case ShapeKind::Sphere:
-                drawn = sweep_.drawCircle(i, object.center + shift, object.radius);
+                drawn = canvas.drawCircle(i, object.center + shift, object.radius);
                 break;
             case ShapeKind::Box:
-                drawn = sweep_.drawBox(i, object.box.translated(shift));
+                drawn = canvas.drawBox(i, object.box.translated(shift));
                 break;
             case ShapeKind::Polygon:
-                drawn = sweep_.drawPolygon(i, object.points.data(), object.points.size(), shift);
+                drawn = canvas.drawPolygon(i, object.points.data(), object.points.size(), shift);
                 break;
             case ShapeKind::Mesh:
                 break;  // 3D only
         }
         tested += drawn ? 1 : 0;
     }
-    sweep_.markVisible(seen_);
-    out.stats.set(Counter::ObjectsTested, tested);
-    out.stats.set(Counter::PixelsSampled, sweep_.rays());
+    return tested;
 }
 
 void ExactOracle::collect(const Scene& scene, FrameResult& out) {

@@ -10,10 +10,10 @@ const KnobTable<OracleOptions>& oracleKnobs() {
              "3D: pixels on the long side of the oracle's ID buffer; an object seen only "
              "through a gap narrower than a pixel is missed, so higher finds more false "
              "culls, at about quadratic cost"),
-        knob("oracle-rays", &OracleOptions::rays_per_turn, kMinOracleRaysPerTurn,
-             kMaxOracleRaysPerTurn,
-             "2D: rays of the oracle's angular sweep per full turn; more resolve thinner "
-             "slivers, at linear cost"),
+        knob("oracle-rays", &OracleOptions::rays_per_turn, 0, kMaxOracleRaysPerTurn,
+             "2D: 0 finds the visible set exactly (an angular envelope with no sampling); "
+             "N > 0 samples N rays per full turn instead, a cross-check that misses "
+             "slivers narrower than a ray, at cost linear in N"),
         knob("oracle-refine", &OracleOptions::refine, 0, 1,
              "3D: 1 casts finer rays (Embree, up to 12 x 12 a pixel) wherever an object no "
              "pixel centre saw may show between centres, and reports what they see or "

@@ -35,7 +35,7 @@ TEST(CliLimitsHelp, OracleFlagsOutsideTheirRangeAreRejected) {
     const std::string scene = "'" + sourcePath("scenes/walls-2d.json") + "'";
     for (const std::string& flag : {std::string("--oracle-res 15"),
                                     "--oracle-res " + std::to_string(kMaxOracleResolution + 1),
-                                    std::string("--oracle-rays 63"),
+                                    std::string("--oracle-rays -1"),
                                     "--oracle-rays " + std::to_string(kMaxOracleRaysPerTurn + 1)}) {
         const CommandResult r = runGridcull("cull " + scene + " --algo exact --frames 1 " + flag);
         EXPECT_EQ(r.status, 2) << flag << "\n" << r.err;

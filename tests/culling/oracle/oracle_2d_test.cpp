@@ -1,6 +1,7 @@
-// The 2D exact oracle (angular sweep) on hand-made scenes whose visible set is
-// known by construction. Unless a test says otherwise: world [0, 100]^2 in
-// 10-unit voxels, camera at (5, 50) looking down +x, a 90 degree wedge, far 1000,
+// The 2D exact oracle (its exact angular envelope, and the sampled sweep where a
+// test says so) on hand-made scenes whose visible set is known by construction.
+// Unless a test says otherwise: world [0, 100]^2 in 10-unit voxels, camera at
+// (5, 50) looking down +x, a 90 degree wedge, far 1000, the exact oracle (--oracle-rays 0); tests of the sampled sweep say so and use
 // 16384 rays per turn (4096 over the wedge, one per 0.022 degrees).
 #include <algorithm>
 #include <cmath>
@@ -220,24 +221,38 @@ TEST(Oracle2d, ReportsItsCounters) {
     addSphere(scene, 2, {-60, 50, 0}, 3);  // behind the camera
     addSphere(scene, 3, {5, 2000, 0}, 3);  // beyond far
     scene.finalize();
-    ExactOracle oracle;
+    OracleOptions sampled;
+    sampled.rays_per_turn = 16384;
+    ExactOracle oracle{sampled};
     oracle.reset(scene);
     FrameResult result;
     oracle.cull(scene, cameraAt(scene, 0.0), 0.0, result);
     EXPECT_EQ(result.pvs, V{1});
     EXPECT_EQ(result.stats.get(Counter::PixelsSampled), 4096);
     EXPECT_EQ(result.stats.get(Counter::ObjectsTested), 1);
+    // The exact default casts one ray per elementary interval: the circle's
+    // interval widened by a margin each side, cut at its two tangents.
+    ExactOracle exact;
+    exact.reset(scene);
+    exact.cull(scene, cameraAt(scene, 0.0), 0.0, result);
+    EXPECT_EQ(result.pvs, V{1});
+    EXPECT_EQ(result.stats.get(Counter::PixelsSampled), 3);
+    EXPECT_EQ(result.stats.get(Counter::ObjectsTested), 1);
     EXPECT_EQ(ExactOracle::rayCount(16384, 360.0), 16384);
     EXPECT_EQ(ExactOracle::rayCount(16384, 1.0), 64);
 }
 
-// The default ray count resolves a circle 0.1 across at distance 90 (about three
-// rays); 64 rays over the wedge straddle it, which is the documented sampling limit.
+// The exact default sees a circle 0.1 across at distance 90, and so does the sweep
+// at 16384 rays per turn (about three rays on it); 64 rays over the wedge
+// straddle it, which is the sweep's documented sampling limit.
 TEST(Oracle2d, TinyFarObjectFoundAtDefaultResolution) {
     Scene scene = lookingRight();
     addSphere(scene, 1, kEye + glm::dvec3(90, 0, 0), 0.05);  // on the boundary of two coarse bins
     scene.finalize();
     EXPECT_EQ(exactIds(scene), V{1});
+    OracleOptions fine;
+    fine.rays_per_turn = 16384;
+    EXPECT_EQ(exactIds(scene, 0.0, fine), V{1});
     OracleOptions coarse;
     coarse.rays_per_turn = 256;  // 64 rays over 90 degrees
     EXPECT_EQ(exactIds(scene, 0.0, coarse), V{});
