@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <string>
 
 #include "culling/io/scene_loader.h"
@@ -97,6 +98,13 @@ int main(int argc, char** argv) {
     if (minutes < 0 && options.scenes < 0 && options.only_seeds.empty() && file.empty())
         minutes = 1.0;
     options.seconds = minutes > 0 ? minutes * 60.0 : 0.0;
+
+    // The output folder is where every scene is written before it is checked:
+    // one that cannot be made stops the run before it starts.
+    std::error_code ec;
+    std::filesystem::create_directories(options.out_dir, ec);
+    if (!std::filesystem::is_directory(options.out_dir, ec))
+        return usage("--out " + options.out_dir + ": cannot create the folder");
 
     gridcull::sweep::SweepReport report;
     if (!file.empty()) {
