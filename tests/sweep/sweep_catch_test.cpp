@@ -4,6 +4,7 @@
 // registry with the others, reports its false culls and no one else's, writes
 // each failing scene as a file, and that file replays the failure: the same
 // frame and ids when the scene is loaded and checked again.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -21,18 +22,25 @@
 namespace gridcull {
 namespace {
 
-class DropFirstCuller final : public Culler {
+// vfc, broken: `drop-first` drops the smallest id of the PVS, `reversed`
+// hands the PVS out in descending order (against the Culler contract).
+class BrokenCuller final : public Culler {
 public:
-    explicit DropFirstCuller(std::unique_ptr<Culler> vfc) : vfc_(std::move(vfc)) {}
-    const char* name() const override { return "drop-first"; }
+    BrokenCuller(std::unique_ptr<Culler> vfc, bool reversed)
+        : vfc_(std::move(vfc)), reversed_(reversed) {}
+    const char* name() const override { return reversed_ ? "reversed" : "drop-first"; }
     void reset(const Scene& scene) override { vfc_->reset(scene); }
     void cull(const Scene& scene, const Camera& camera, double t, FrameResult& out) override {
         vfc_->cull(scene, camera, t, out);
-        if (!out.pvs.empty()) out.pvs.erase(out.pvs.begin());
+        if (reversed_)
+            std::reverse(out.pvs.begin(), out.pvs.end());
+        else if (!out.pvs.empty())
+            out.pvs.erase(out.pvs.begin());
     }
 
 private:
     std::unique_ptr<Culler> vfc_;
+    bool reversed_;
 };
 
 // Registers the broken family for one test and removes it after.
@@ -42,10 +50,12 @@ protected:
         FamilyEntry family;
         family.id = "sweep-broken";
         family.title = "A broken culler for the sweep's test";
-        family.algorithms = {{"drop-first", kRunsBoth, "vfc minus its smallest id"}};
+        family.algorithms = {{"drop-first", kRunsBoth, "vfc minus its smallest id"},
+                             {"reversed", kRunsBoth, "vfc in descending order"}};
         family.make = [](CullerRequest& request) -> std::unique_ptr<Culler> {
             std::string error;
-            return std::make_unique<DropFirstCuller>(makeCuller("vfc", *request.knobs, error));
+            return std::make_unique<BrokenCuller>(makeCuller("vfc", *request.knobs, error),
+                                                  request.algorithm == "reversed");
         };
         std::string error;
         ASSERT_TRUE(registerFamily(std::move(family), error)) << error;
@@ -126,6 +136,20 @@ TEST_F(SweepCatch, LateFramesAllowanceIsHonoured) {
     EXPECT_GT(strict.tallies[0].false_culls, 0);
     EXPECT_EQ(lenient.tallies[0].false_culls, 0);
     EXPECT_EQ(lenient.tallies[0].frames, scene.frames);
+}
+
+// A PVS out of order is reported as an error, not compared as if sorted.
+TEST_F(SweepCatch, UnsortedPvsIsAnError) {
+    Scene scene;
+    std::string error;
+    ASSERT_TRUE(
+        sweep::replayable(sweep::generatedScene(103), out_dir_ + "/order.json", scene, error))
+        << error;
+    const sweep::SceneCheck check =
+        sweep::checkScene(scene, {{"reversed", 0}}, sweep::sweepKnobs(64));
+    ASSERT_EQ(check.errors.size(), 1u);
+    EXPECT_NE(check.errors[0].find("reversed: frame "), std::string::npos) << check.errors[0];
+    EXPECT_NE(check.errors[0].find("not sorted and unique"), std::string::npos) << check.errors[0];
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 
 #include "culling/api/culler.h"
@@ -50,6 +51,13 @@ void checkAlgorithm(const Scene& scene, const SweepAlgorithm& algo, const KnobVa
         culler->cull(scene, camera, t, out);
         tally.seconds += secondsSince(frame_start);
         ++tally.frames;
+        // The comparison below needs the Culler contract's sorted, unique ids.
+        if (std::adjacent_find(out.pvs.begin(), out.pvs.end(), std::greater_equal<int>()) !=
+            out.pvs.end()) {
+            check.errors.push_back(algo.name + ": frame " + std::to_string(f) +
+                                   ": the PVS is not sorted and unique");
+            return;
+        }
         std::vector<int> gone;
         std::set_difference(reference[size_t(f)].begin(), reference[size_t(f)].end(),
                             out.pvs.begin(), out.pvs.end(), std::back_inserter(gone));

@@ -48,7 +48,9 @@ struct SceneCheck {
     std::vector<AlgorithmTally> tallies;  // one per algorithm given, in order
     AlgorithmTally oracle;
     std::vector<FalseCull> false_culls;  // the first one of each failing algorithm
-    std::vector<std::string> errors;     // algorithms that could not be made
+    // Algorithms that could not be made, or broke the Culler contract (a PVS
+    // not sorted and unique: their scene stops there).
+    std::vector<std::string> errors;
 };
 
 // Runs the scene's frames for the oracle and each algorithm that fits the

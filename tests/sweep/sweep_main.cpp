@@ -6,7 +6,8 @@
 //         [--res R] [--threads T] [--out DIR]
 //
 // Exit status: 0 with no false cull, 1 with one or more (or a scene that could
-// not be made or written), 2 on a bad command line.
+// not be written, or a PVS out of order), 2 on a bad command line. Generated
+// scenes the loader refuses are listed as not checked; they do not change it.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

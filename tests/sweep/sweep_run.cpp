@@ -115,9 +115,11 @@ SweepReport runSweep(const SweepOptions& options, std::FILE* progress) {
                                                              : options.only_seeds[size_t(n)];
             Scene scene;
             std::string error;
-            if (!replayable(generatedScene(seed), work, scene, error)) {
+            bool rejected = false;
+            if (!replayable(generatedScene(seed), work, scene, error, &rejected)) {
                 std::lock_guard<std::mutex> guard(lock);
-                report.errors.push_back("seed " + std::to_string(seed) + ": " + error);
+                (rejected ? report.rejected : report.errors)
+                    .push_back("seed " + std::to_string(seed) + ": " + error);
                 continue;
             }
             const SceneCheck check = checkScene(scene, report.algorithms, knobs);
@@ -183,6 +185,8 @@ void printReport(const SweepReport& report, const SweepOptions& options, std::FI
         report.elapsed > 0 ? 60.0 * double(report.sceneFrames()) / report.elapsed : 0.0,
         report.cpu_seconds > 0 ? 60.0 * double(report.sceneFrames()) / report.cpu_seconds : 0.0);
     for (const std::string& e : report.errors) std::fprintf(out, "error: %s\n", e.c_str());
+    for (const std::string& r : report.rejected)
+        std::fprintf(out, "not checked, the loader refuses the generated scene: %s\n", r.c_str());
     for (const SweepFailure& f : report.failures) {
         std::string ids;
         for (const int id : f.cull.ids) ids += (ids.empty() ? "" : " ") + std::to_string(id);

@@ -39,9 +39,10 @@ struct SweepReport {
     AlgorithmTally oracle;
     int64_t scenes = 0;
     std::vector<SweepFailure> failures;
-    std::vector<std::string> errors;  // scenes that could not be made or written
-    double elapsed = 0.0;             // wall clock, seconds
-    double cpu_seconds = 0.0;         // the process's CPU time over all threads
+    std::vector<std::string> errors;    // scenes that could not be written, broken PVSs
+    std::vector<std::string> rejected;  // generated scenes the loader refuses: not checked
+    double elapsed = 0.0;               // wall clock, seconds
+    double cpu_seconds = 0.0;           // the process's CPU time over all threads
 
     int64_t sceneFrames() const;
     int64_t falseCulls() const;

@@ -68,13 +68,16 @@ void snapMeshes(Scene& scene) {
     }
 }
 
-bool replayable(const Scene& scene, const std::string& work_file, Scene& out, std::string& error) {
+bool replayable(const Scene& scene, const std::string& work_file, Scene& out, std::string& error,
+                bool* rejected) {
+    if (rejected) *rejected = false;
     Scene snapped = scene;
     snapMeshes(snapped);
     if (!writeSceneFile(snapped, work_file, error)) return false;
     SceneLoadResult loaded = loadSceneFile(work_file);
     if (!loaded.scene) {
         error = loaded.errors.empty() ? work_file + ": not loaded" : loaded.errors.front();
+        if (rejected) *rejected = true;
         return false;
     }
     out = std::move(*loaded.scene);

@@ -31,7 +31,11 @@ Scene generatedScene(uint64_t seed);
 void snapMeshes(Scene& scene);
 
 // The scene as written to `work_file` and loaded back; false and `error` (the
-// writer's or loader's message) when that fails.
-bool replayable(const Scene& scene, const std::string& work_file, Scene& out, std::string& error);
+// writer's or loader's message) when that fails, with `*rejected` set when it
+// was the loader that refused the scene (a generator's scene the file format
+// does not allow, e.g. a polygon too small to enclose an area at its
+// coordinates' precision: it cannot be replayed, so it is not checked).
+bool replayable(const Scene& scene, const std::string& work_file, Scene& out, std::string& error,
+                bool* rejected = nullptr);
 
 }  // namespace gridcull::sweep
