@@ -26,6 +26,22 @@ bool overlaps(const PixelRect& a, const PixelRect& b) {
     return !a.intersect(b).empty();
 }
 
+// A test box's growth, relative to the largest coordinate its depths are
+// computed from (its own and the eye's): some 10^7 times the rounding of a
+// depth (a few units in 10^16 of them), so that the grown box's faces are
+// strictly nearer than any surface drawn on the box's own faces, and far below
+// anything a scene resolves (10^-7 units in a world of 100).
+constexpr double kTestBoxMargin = 1e-9;
+
+Aabb grownForQuery(const Aabb& box, const glm::dvec3& eye) {
+    double scale = 1.0;
+    for (int a = 0; a < 3; ++a)
+        scale = std::max({scale, std::abs(box.min[a]), std::abs(box.max[a]), std::abs(eye[a])});
+    if (!std::isfinite(scale)) return box;  // an unbounded box needs no margin
+    const glm::dvec3 margin(kTestBoxMargin * scale);
+    return {box.min - margin, box.max + margin};
+}
+
 }  // namespace
 
 int bspSkipFrames(uint32_t answers, int history) {
@@ -210,6 +226,10 @@ Aabb BspOqCuller::tightBox(int node) {
 }
 
 Aabb BspOqCuller::testBox(const ActiveNode& n, bool& shrunk) {
+    return grownForQuery(contentBox(n, shrunk), camera_->position);
+}
+
+Aabb BspOqCuller::contentBox(const ActiveNode& n, bool& shrunk) {
     const bool shrink = mode_ == BspOqMode::Full && options_.shrink_delay >= 0;
     if (n.object >= 0) {
         const ObjectBspNode& node = objectTree(n.object)->node(n.node);

@@ -49,8 +49,16 @@
 // is dropped only outside the frustum, with nothing in it, or when its query
 // says no pixel centre sees its box nearer than what was drawn; and what was
 // drawn is a subset of the scene's surfaces at the oracle's pixel centres
-// (the same rasterizer at the same resolution), so an object the oracle sees
-// at a pixel makes every box around it pass there.
+// (the same rasterizer at the same resolution), so at a pixel where the
+// oracle sees an object nothing drawn is nearer than the object. Nothing
+// nearer is not enough for a box that is only as near: the depth test is
+// strict, and a box of a node's objects (shrunk, or an object part's bounds)
+// has the objects' faces for its own, which tie with another object's face in
+// the same plane (rooms' walls overlapping at a corner); the oracle gives a
+// tied pixel to whichever it drew first, the culler may have drawn the other.
+// So every box a node is tested on is grown by a margin (about 1e-9 of its
+// coordinates, bsp_oq_culler.cpp), which makes it strictly nearer there than
+// anything it holds.
 //
 // Departures from the paper, and why:
 // - The transform of an object's tree is a translation: scenes move objects
@@ -71,6 +79,12 @@
 //   every mode, so that VFC only draws what its name says.
 // - "Contents not changed for several frames" is tracked per scene node: a
 //   moving object marks the nodes on its old and new path to the root.
+// - Every box a node is tested on (cell, shrunk box or part bounds) is grown
+//   by about 1e-9 of its coordinates (the paper queries the box itself): a
+//   box as near as its objects loses the strict depth test to a surface drawn
+//   flush with them, and the long sweep caught shrunk boxes dropping walls
+//   seen only where they tie with another wall (tests/culling/bsp_oq/
+//   bsp_oq_coplanar_test.cpp).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -160,8 +174,10 @@ private:
     // Notes that `node` and its ancestors changed contents this frame.
     void markChanged(int node);
     void updateSceneTree(double t);
-    // The box a node is tested on (sets shrunk).
+    // The box a node is tested on: contentBox grown by a margin (sets shrunk).
     Aabb testBox(const ActiveNode& n, bool& shrunk);
+    // Its cell, or with shrunk boxes the bounds of what it holds (sets shrunk).
+    Aabb contentBox(const ActiveNode& n, bool& shrunk);
     Aabb tightBox(int node);
     bool nodeEmpty(const ActiveNode& n) const;
     // Algorithm 3 (once a frame for a node that needs a query: a node that
