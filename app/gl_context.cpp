@@ -1,23 +1,10 @@
 #include "app/gl_context.h"
 
 #include <GLFW/glfw3.h>
-#if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/lsan_interface.h>
-#endif
 
 namespace gridcull {
 
 namespace {
-
-// While one lives, LeakSanitizer does not check what this thread allocates
-// (sanitized builds; nothing otherwise).
-#if defined(__SANITIZE_ADDRESS__)
-using IgnoreLeaksOnThisThread = __lsan::ScopedDisabler;
-#else
-struct IgnoreLeaksOnThisThread {
-    IgnoreLeaksOnThisThread() {}
-};
-#endif
 
 // GLFW reports errors through a callback; the last one becomes our message.
 std::string& lastGlfwError() {
@@ -54,14 +41,7 @@ bool GlWindow::create(int width, int height, const char* title, bool visible,
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_SAMPLES, 0);
-    {
-        // Mesa's software driver keeps a block from its one-time set-up, made
-        // while the first context is created, and is unloaded at exit: a leak
-        // LeakSanitizer reports without a frame it could name, so a suppression
-        // cannot match it. Nothing of ours runs in this call.
-        IgnoreLeaksOnThisThread third_party_only;
-        window_ = glfwCreateWindow(width, height, title, nullptr, nullptr);
-    }
+    window_ = glfwCreateWindow(width, height, title, nullptr, nullptr);
     if (!window_) {
         error = "cannot open an OpenGL 3.3 core window: " + lastGlfwError();
         return false;
