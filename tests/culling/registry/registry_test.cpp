@@ -110,6 +110,7 @@ TEST(Registry, EveryCounterIsReportedBySomeAlgorithm) {
     KnobValues knobs;
     knobs.set("oracle-res", 64);
     knobs.set("lazy-prob", 0.5);  // the probability rule reports its own counter
+    knobs.set("oracle-refine", 1);  // so do the oracle's finer rays, which are off by default
     Scene flat = test::scene2d();
     test::addSphere(flat, 1, {60, 50, 0}, 2);
     flat.objects.back().motion.kind = MotionKind::Linear;  // TBVs come with motion
