@@ -8,21 +8,13 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "culling/oracle/angle_turn.h"
 #include "culling/scene/ray_intersect.h"
 
 namespace gridcull {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-constexpr double kPi = 3.141592653589793238462643383279;
-
-// The signed angle of a turn, wrapped into (-pi, pi].
-double wrapTurn(double a) {
-    while (a > kPi) a -= kTwoPi;
-    while (a <= -kPi) a += kTwoPi;
-    return a;
-}
 
 }  // namespace
 
