@@ -41,8 +41,9 @@
 // asked, not hidden.
 // After the buffer is drawn, an object no centre saw is a candidate when its
 // bounds reach a pixel whose square is not proven covered nearer than the
-// object's nearest depth (subsample_gate.h says how a square is proven
-// covered). Its open pixels are cast again with Embree rays at 4 x 4 and then
+// object's least depth inside that pixel (subsample_gate.h says how a square is
+// proven covered, pixel_pyramid.h how far an object reaches into a pixel). Its
+// open pixels are cast again with Embree rays at 4 x 4 and then
 // 12 x 12 points a pixel (subsample_refiner.h), until one sees it. Both kinds
 // are "sub-sample" and kept out of the PVS, which stays what the pixel centres
 // see (an image at the oracle's resolution has no pixel of them, so a culler
@@ -57,11 +58,18 @@
 // a frame) resolves gaps down to 1/12 pixel. Cost: nothing where
 // every unseen object lies behind wide occluders; elsewhere 160 rays for each
 // open pixel of each candidate that no ray decides. On the shipped scenes
-// (1024 pixels, 12 frames each) that is 0.57 s a frame in city-walk-3d, 1.4 s
-// in forest-3d and 2.0 to 2.5 s in scenes/default.json, building-people-3d
-// and bunnies-3d, against 3 to 140 ms without: most candidates sit behind two
-// objects that touch, which no sampling can close, and end undecided after
-// all their rays. Hence off by default.
+// (1024 pixels, 12 or 13 frames each, RelWithDebInfo, one core) a frame takes
+// 20 to 40 ms in scenes/default.json, city-3d, city-walk-3d and hidden-movers-3d,
+// 60 to 350 ms in the forests, rooms, meshes, spheres, building-people-3d and
+// walkthrough-3d, 0.6 s in plant-3d and 2.4 s in bunnies-3d (a mesh's bounding
+// box reaches far more pixels than the mesh; the 2^22 rays run out), against 4
+// to 160 ms without: most candidates left sit behind two objects that touch or
+// overlap, which no single convex shape covers and no sampling can close, and
+// end undecided after all their rays. Hence off by default. Embree alone, one
+// ray a pixel with the objects placed each frame, is no faster than the
+// rasterizer: 112 to 280 ms a frame in scenes/default.json, city-walk-3d,
+// forest-walk-3d, mesh-3d and bunnies-3d, 2.1x to 33x the rasterized oracle,
+// so the oracle rasterizes and casts rays only to refine.
 //
 // Shapes outside their dimension (polygons in 3D, meshes in 2D; the loader
 // rejects both) are ignored. A camera inside a sphere, box or polygon sees only

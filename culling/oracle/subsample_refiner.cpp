@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "culling/oracle/pixel_pyramid.h"
 #include "culling/scene/ray_intersect.h"
 
 namespace gridcull {
@@ -21,39 +23,34 @@ glm::dvec3 SubsampleRefiner::View::ray(double x, double y) const {
     return forward + u * right + v * up;
 }
 
-bool SubsampleRefiner::mayReach(const View& view, const glm::dvec3 corners[8], bool sphere,
-                                const glm::dvec3& center, double radius, int px, int py) const {
-    // The pixel's pyramid from the eye: u0 z <= x <= u1 z and v1 z <= y <= v0 z
-    // in view space, as four planes through the eye with inward normals.
-    const double u0 = (2.0 * px / view.width - 1.0) * view.tan_x;
-    const double u1 = (2.0 * (px + 1) / view.width - 1.0) * view.tan_x;
-    const double v0 = (1.0 - 2.0 * py / view.height) * view.tan_y;
-    const double v1 = (1.0 - 2.0 * (py + 1) / view.height) * view.tan_y;
-    const glm::dvec3 normals[4] = {{1, 0, -u0}, {-1, 0, u1}, {0, -1, v0}, {0, 1, -v1}};
-    for (const glm::dvec3& n : normals) {
-        if (sphere) {
-            if (glm::dot(n, center) < -radius * glm::length(n)) return false;
-            continue;
-        }
-        bool any_inside = false;
-        for (int c = 0; c < 8 && !any_inside; ++c) any_inside = glm::dot(n, corners[c]) >= 0.0;
-        if (!any_inside) return false;
-    }
-    return true;
+double SubsampleRefiner::nearestInPixel(const View& view, const glm::dvec3 corners[8],
+                                        bool sphere, const glm::dvec3& center, double radius,
+                                        int px, int py) const {
+    const PixelPyramid pyramid = pixelPyramid((2.0 * px / view.width - 1.0) * view.tan_x,
+                                              (2.0 * (px + 1) / view.width - 1.0) * view.tan_x,
+                                              (1.0 - 2.0 * py / view.height) * view.tan_y,
+                                              (1.0 - 2.0 * (py + 1) / view.height) * view.tan_y);
+    return sphere ? leastSphereDepthInPyramid(pyramid, center, radius)
+                  : leastBoxDepthInPyramid(pyramid, corners);
 }
 
 double SubsampleRefiner::coverDepth(const View& view, const Scene& scene,
                                    const std::vector<glm::dvec3>& shifts,
                                    const IdDepthBuffer& buffer, int px, int py) {
     constexpr double kOpen = std::numeric_limits<double>::infinity();
-    if (px == 0 || py == 0 || px + 1 == view.width || py + 1 == view.height) return kOpen;
     const size_t p = size_t(py) * size_t(view.width) + size_t(px);
     if (cover_frame_[p] == frame_) return cover_[p];
+    // The objects the centres inside the image see are the ones to try. At the
+    // image's border the neighbours' centres outside it have no id, but their
+    // rays are still rays: the nine are cast all the same, so a border pixel is
+    // proven covered as any other.
     int ids[9];
     int distinct = 0;
     for (int dy = -1; dy <= 1; ++dy) {
+        if (py + dy < 0 || py + dy >= view.height) continue;
         const int32_t* row = buffer.indexRow(py + dy);
         for (int dx = -1; dx <= 1; ++dx) {
+            if (px + dx < 0 || px + dx >= view.width) continue;
             const int id = row[px + dx];
             if (id >= 0 && std::find(ids, ids + distinct, id) == ids + distinct) ids[distinct++] = id;
         }
@@ -139,11 +136,26 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
     touched_.clear();
     gate_.build(buffer);
 
+    // Every near-plane point of a ray through the image lies within `reach` of
+    // the eye, so only a solid that comes that close can hold one (or the eye).
+    // The depth key alone would also keep everything behind the camera, which
+    // every ray would then test. (The margin covers the rounding of reach.)
     near_solids_.clear();
+    const double reach = view.near *
+                         std::sqrt(1.0 + view.tan_x * view.tan_x + view.tan_y * view.tan_y) *
+                         (1.0 + 1e-9);
     for (const auto& [key, i] : order) {
         if (key > camera.near) break;  // order is by nearest depth
-        const ShapeKind shape = scene.objects[size_t(i)].shape;
-        if (shape == ShapeKind::Sphere || shape == ShapeKind::Box) near_solids_.push_back(i);
+        const SceneObject& object = scene.objects[size_t(i)];
+        const glm::dvec3& shift = shifts[size_t(i)];
+        if (object.shape == ShapeKind::Sphere) {
+            const double gap = glm::length(object.center + shift - view.eye) - object.radius;
+            if (gap <= reach) near_solids_.push_back(i);
+        } else if (object.shape == ShapeKind::Box) {
+            const Aabb box = object.box.translated(shift);
+            const glm::dvec3 outside = glm::max(glm::max(box.min - view.eye, view.eye - box.max), 0.0);
+            if (glm::dot(outside, outside) <= reach * reach) near_solids_.push_back(i);
+        }
     }
 
     bool placed = false;
@@ -172,11 +184,17 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
         const glm::dvec3 center = toView(object.center + shift);
         pixels_.clear();
         for (int py = rows.lo; py <= rows.hi; ++py)
-            for (int px = cols.lo; px <= cols.hi; ++px)
-                if (gate_.gate(px, py) >= z &&
-                    mayReach(view, corners, sphere, center, object.radius, px, py) &&
-                    coverDepth(view, scene, shifts, buffer, px, py) >= z)
+            for (int px = cols.lo; px <= cols.hi; ++px) {
+                const double gate = gate_.gate(px, py);
+                if (gate < z) continue;
+                const double cover = coverDepth(view, scene, shifts, buffer, px, py);
+                if (cover < z) continue;
+                // The object's own least depth in this pixel, when it reaches it.
+                const double here = std::max(
+                    z, nearestInPixel(view, corners, sphere, center, object.radius, px, py));
+                if (here != std::numeric_limits<double>::infinity() && gate >= here && cover >= here)
                     pixels_.push_back(size_t(py) * size_t(view.width) + size_t(px));
+            }
         if (pixels_.empty()) continue;
         ++counts.candidates;
 

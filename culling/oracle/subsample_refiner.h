@@ -3,10 +3,10 @@
 // the centres, and supersampling to decide them.
 //
 // After the ID buffer is drawn, an object that no centre saw is a candidate when
-// its screen bounds hold an open pixel for it (subsample_gate.h: a pixel whose
-// square is not proven covered nearer than the object's nearest depth) that the
-// object's bounds reach (the pixel's pyramid from the eye meets its sphere or
-// box; a mesh's bounding box). Its open pixels are then cast again at
+// its screen bounds hold an open pixel for it: a pixel that its sphere or box (a
+// mesh's bounding box) reaches (pixel_pyramid.h) and whose square is not proven
+// covered (subsample_gate.h, coverDepth below) nearer than the object's least
+// depth inside that pixel's pyramid. Its open pixels are then cast again at
 // kFirstLevel x kFirstLevel sub-samples, then at kLastLevel x kLastLevel, each
 // ray with Embree (embree_rays.h), until a ray's nearest object is the candidate.
 // Every unseen object a ray finds first is visible, candidate or not. Sampling
@@ -66,9 +66,11 @@ private:
         int width, height;
         glm::dvec3 ray(double x, double y) const;  // through continuous pixel point (x, y)
     };
-    // Whether object i's sphere or bounds may reach into pixel (px, py).
-    bool mayReach(const View& view, const glm::dvec3 corners[8], bool sphere,
-                  const glm::dvec3& center, double radius, int px, int py) const;
+    // +infinity when object i's sphere or bounds cannot reach into pixel
+    // (px, py); else a lower bound of its depth there, so that a cover nearer
+    // than the bound hides it in that pixel.
+    double nearestInPixel(const View& view, const glm::dvec3 corners[8], bool sphere,
+                          const glm::dvec3& center, double radius, int px, int py) const;
     // The farthest depth, over the nine centres of the pixel and its neighbours,
     // of a sphere or box that all nine centres' rays meet (nearest or not), the
     // least such over the objects those centres see; +infinity when none does.

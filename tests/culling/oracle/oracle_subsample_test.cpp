@@ -115,18 +115,40 @@ TEST(OracleSubsample, AnObjectBehindOneWideOccluderIsNoCandidate) {
     EXPECT_EQ(out.stats.get(Counter::RefineRays), 0);
 }
 
-// The eye inside a sphere sees only it, at depth near: a box inside the sphere
-// and at the image's edge (whose pixels are never proven covered) is cast at,
-// and the rays must answer the sphere as the rasterizer does, not the box.
-TEST(OracleSubsample, RaysFromInsideASolidSeeTheSolid) {
+// The image's border pixels are proven covered as any other: the rays of their
+// neighbours' centres outside the image are rays all the same. A box behind a
+// wall, both wider than the image, is no candidate.
+TEST(OracleSubsample, AnObjectHiddenAcrossTheImagesBorderIsNoCandidate) {
     Scene scene = test::scene3d();
-    test::addSphere(scene, kWallLeft, kEye, 30.0);
-    test::addBox(scene, kBehind, {worldX(1.1, 10.0), 45, 14}, {worldX(0.9, 10.0), 55, 16});
+    test::addBox(scene, kWallLeft, {0, 0, 15}, {100, 100, 16});
+    test::addBox(scene, kBehind, {0, 0, 40}, {100, 100, 41});
     test::setCamera(scene, kEye, {50, 50, 100}, 90.0, 0.1, 1000.0);
     scene.camera.aspect = 1.0;
     scene.finalize();
     const FrameResult out = cull(scene, 1);
     EXPECT_EQ(out.pvs, V{kWallLeft});
+    EXPECT_TRUE(out.sub_sample_undecided.empty());
+    EXPECT_EQ(out.stats.get(Counter::SubSampleCandidates), 0);
+    EXPECT_EQ(out.stats.get(Counter::RefineRays), 0);
+}
+
+// A ray that starts inside a solid sees that solid, at depth near, as the
+// rasterizer does. The box holds the near plane on the image's left half (its
+// side x = 50 passes through the eye: the line between pixel columns 31 and 32)
+// and, inside it, a sphere that touches that side. Pixel column 31 is open (its
+// right neighbours see nothing), so its sub-samples are cast; every one starts
+// inside the box. Embree alone would meet the sphere before the box's far side
+// and call it visible.
+TEST(OracleSubsample, RaysFromInsideASolidSeeTheSolid) {
+    Scene scene = test::scene3d();
+    test::addBox(scene, kWallLeft, {50, 0, kEye.z + 0.05}, {100, 100, 90});
+    test::addSphere(scene, kBehind, {53, 50, 40}, 3.0);
+    test::setCamera(scene, kEye, {50, 50, 100}, 90.0, 0.1, 1000.0);
+    scene.camera.aspect = 1.0;
+    scene.finalize();
+    const FrameResult out = cull(scene, 1);
+    EXPECT_EQ(out.pvs, V{kWallLeft});
+    EXPECT_GT(out.stats.get(Counter::RefineRays), 0);
     EXPECT_TRUE(out.sub_sample_visible.empty());
 }
 
@@ -155,7 +177,9 @@ TEST(OracleSubsample, RefinedAnswerAgreesWithAFourTimesFinerBuffer) {
     std::printf("[ refined ] %d scenes: the 4096-pixel buffer sees %d objects; refinement found %d "
                 "that 1024 pixel centres missed; %d left sub-sample\n",
                 scenes, fine_visible, refined_found, sub_sample);
-    if (!test::singleSeedRun()) EXPECT_GT(fine_visible, scenes);
+    if (!test::singleSeedRun()) {
+        EXPECT_GT(fine_visible, scenes);
+    }
 }
 
 }  // namespace

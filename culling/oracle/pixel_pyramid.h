@@ -1,0 +1,44 @@
+// One pixel's pyramid from the eye, and what a sphere or a box does inside it:
+// the geometry behind the sub-sample gate's per-pixel test (subsample_refiner.h).
+//
+// In view space (x right, y up, z forward, the eye at the origin) the rays
+// through pixel square [u0, u1] x [v1, v0] of slopes fill the pyramid
+// u0 z <= x <= u1 z, v1 z <= y <= v0 z: four planes through the eye. A sphere's
+// or box's least depth (view z) inside it tells whether a cover nearer than that
+// hides the object in this pixel; the object's own nearest depth, over the whole
+// screen, is a far weaker bound near its silhouette.
+#pragma once
+#include <glm/vec3.hpp>
+
+namespace gridcull {
+
+struct PixelPyramid {
+    // Inward normals of the top, right, bottom and left planes: face i lies
+    // between the corner rays edges[i] and edges[(i + 1) % 4].
+    glm::dvec3 normals[4];
+    glm::dvec3 edges[4];
+};
+
+// The pyramid of slopes u0 < u1 (left to right) and v0 > v1 (top to bottom).
+PixelPyramid pixelPyramid(double u0, double u1, double v0, double v1);
+
+// Whether the sphere meets the pyramid: exactly, up to a relative margin of
+// 1e-9 of the radius that keeps a sphere touching it. The four planes taken one
+// by one pass every pixel of the silhouette's bounding rectangle, a fifth of
+// which lies outside the silhouette.
+bool sphereMeetsPyramid(const PixelPyramid& pyramid, const glm::dvec3& center, double radius);
+
+// A lower bound of the least depth of the sphere's part inside the pyramid, or
+// +infinity when the sphere misses it: the greatest, over the four planes, of
+// the least depth of the sphere's part inside that plane alone (each such part
+// contains the part inside all four). Lowered by 1e-9 of itself for rounding.
+double leastSphereDepthInPyramid(const PixelPyramid& pyramid, const glm::dvec3& center,
+                                 double radius);
+
+// The same for a box given by its 8 view-space corners (grid/aabb.h's corner
+// order: bit 0 x, bit 1 y, bit 2 z). +infinity when all corners lie outside one
+// plane; that test is not exact (a box can miss the pyramid diagonally and still
+// pass it), so a box may be kept where it does not reach.
+double leastBoxDepthInPyramid(const PixelPyramid& pyramid, const glm::dvec3 corners[8]);
+
+}  // namespace gridcull
