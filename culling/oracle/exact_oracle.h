@@ -59,16 +59,16 @@
 // every unseen object lies behind wide occluders; elsewhere 160 rays for each
 // open pixel of each candidate that no ray decides. On the shipped scenes
 // (1024 pixels, 12 or 13 frames each, RelWithDebInfo, one core) a frame takes
-// 20 to 40 ms in scenes/default.json, city-3d, city-walk-3d and hidden-movers-3d,
-// 60 to 350 ms in the forests, rooms, meshes, spheres, building-people-3d and
-// walkthrough-3d, 0.6 s in plant-3d and 2.4 s in bunnies-3d (a mesh's bounding
-// box reaches far more pixels than the mesh; the 2^22 rays run out), against 4
-// to 160 ms without: most candidates left sit behind two objects that touch or
+// 15 to 40 ms in scenes/default.json, city-3d, city-walk-3d, hidden-movers-3d
+// and mesh-3d, 70 to 320 ms in the forests, rooms, spheres, building-people-3d
+// and walkthrough-3d, 0.6 s in plant-3d and 2 s in bunnies-3d (300 bunnies
+// passing through each other; the 2^22 rays nearly run out), against 3 to 150
+// ms without: most candidates left sit behind two objects that touch or
 // overlap, which no single convex shape covers and no sampling can close, and
 // end undecided after all their rays. Hence off by default. Embree alone, one
 // ray a pixel with the objects placed each frame, is no faster than the
-// rasterizer: 112 to 280 ms a frame in scenes/default.json, city-walk-3d,
-// forest-walk-3d, mesh-3d and bunnies-3d, 2.1x to 33x the rasterized oracle,
+// rasterizer: 70 to 210 ms a frame on the shipped 3D scenes, 1.2x (bunnies-3d)
+// to 31x the rasterized oracle (scripts/refine-cost.sh, first 48 frames),
 // so the oracle rasterizes and casts rays only to refine.
 //
 // Shapes outside their dimension (polygons in 3D, meshes in 2D; the loader

@@ -19,6 +19,32 @@ double lowered(double bound) {
 
 }  // namespace
 
+glm::dvec3 PixelView::ray(double x, double y) const {
+    const double u = (2.0 * x / width - 1.0) * tan_x;
+    const double v = (1.0 - 2.0 * y / height) * tan_y;
+    return forward + u * right + v * up;
+}
+
+glm::dvec3 PixelView::toView(const glm::dvec3& world) const {
+    const glm::dvec3 rel = world - eye;
+    return {glm::dot(rel, right), glm::dot(rel, up), glm::dot(rel, forward)};
+}
+
+double PixelView::columnOf(const glm::dvec3& p) const {
+    return (p.x / p.z / tan_x + 1.0) * 0.5 * width;
+}
+
+double PixelView::rowOf(const glm::dvec3& p) const {
+    return (1.0 - p.y / p.z / tan_y) * 0.5 * height;
+}
+
+PixelPyramid pixelPyramid(const PixelView& view, int px, int py) {
+    return pixelPyramid((2.0 * px / view.width - 1.0) * view.tan_x,
+                        (2.0 * (px + 1) / view.width - 1.0) * view.tan_x,
+                        (1.0 - 2.0 * py / view.height) * view.tan_y,
+                        (1.0 - 2.0 * (py + 1) / view.height) * view.tan_y);
+}
+
 PixelPyramid pixelPyramid(double u0, double u1, double v0, double v1) {
     return {{{0, -1, v0}, {-1, 0, u1}, {0, 1, -v1}, {1, 0, -u0}},
             {{u0, v0, 1}, {u1, v0, 1}, {u1, v1, 1}, {u0, v1, 1}}};

@@ -12,6 +12,21 @@
 
 namespace gridcull {
 
+// The buffer's camera and pixel mapping (id_depth_buffer.h), for rays and
+// pyramids through continuous pixel points: pixel (px, py) is the square
+// [px, px + 1] x [py, py + 1], its centre at (px + 0.5, py + 0.5), rows from the
+// top.
+struct PixelView {
+    glm::dvec3 eye, right, up, forward;
+    double tan_x, tan_y, near, far;
+    int width, height;
+
+    glm::dvec3 ray(double x, double y) const;  // through continuous pixel point (x, y)
+    glm::dvec3 toView(const glm::dvec3& world) const;
+    double columnOf(const glm::dvec3& view_point) const;  // continuous x of its projection
+    double rowOf(const glm::dvec3& view_point) const;     // continuous y of its projection
+};
+
 struct PixelPyramid {
     // Inward normals of the top, right, bottom and left planes: face i lies
     // between the corner rays edges[i] and edges[(i + 1) % 4].
@@ -21,6 +36,8 @@ struct PixelPyramid {
 
 // The pyramid of slopes u0 < u1 (left to right) and v0 > v1 (top to bottom).
 PixelPyramid pixelPyramid(double u0, double u1, double v0, double v1);
+// Pixel (px, py)'s pyramid.
+PixelPyramid pixelPyramid(const PixelView& view, int px, int py);
 
 // Whether the sphere meets the pyramid: exactly, up to a relative margin of
 // 1e-9 of the radius that keeps a sphere touching it. The four planes taken one

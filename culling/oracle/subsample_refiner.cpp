@@ -16,20 +16,10 @@ namespace gridcull {
 // Level 12 skips the points of level 4 it contains: a = 3 j + 1.
 static_assert(SubsampleRefiner::kLastLevel == 3 * SubsampleRefiner::kFirstLevel);
 
-glm::dvec3 SubsampleRefiner::View::ray(double x, double y) const {
-    // The rasterizer's mapping (id_depth_buffer.h) at a continuous pixel point.
-    const double u = (2.0 * x / width - 1.0) * tan_x;
-    const double v = (1.0 - 2.0 * y / height) * tan_y;
-    return forward + u * right + v * up;
-}
-
 double SubsampleRefiner::nearestInPixel(const View& view, const glm::dvec3 corners[8],
                                         bool sphere, const glm::dvec3& center, double radius,
                                         int px, int py) const {
-    const PixelPyramid pyramid = pixelPyramid((2.0 * px / view.width - 1.0) * view.tan_x,
-                                              (2.0 * (px + 1) / view.width - 1.0) * view.tan_x,
-                                              (1.0 - 2.0 * py / view.height) * view.tan_y,
-                                              (1.0 - 2.0 * (py + 1) / view.height) * view.tan_y);
+    const PixelPyramid pyramid = pixelPyramid(view, px, py);
     return sphere ? leastSphereDepthInPyramid(pyramid, center, radius)
                   : leastBoxDepthInPyramid(pyramid, corners);
 }
@@ -174,14 +164,13 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
         if (!gate_.mayShow(cols, rows, z)) continue;
 
         // In view space, as the pyramid test wants them.
-        auto toView = [&](const glm::dvec3& p) {
-            const glm::dvec3 rel = p - view.eye;
-            return glm::dvec3(glm::dot(rel, view.right), glm::dot(rel, view.up),
-                              glm::dot(rel, view.forward));
-        };
         glm::dvec3 corners[8];
-        for (int c = 0; c < 8; ++c) corners[c] = toView(bounds.corner(c));
-        const glm::dvec3 center = toView(object.center + shift);
+        for (int c = 0; c < 8; ++c) corners[c] = view.toView(bounds.corner(c));
+        const glm::dvec3 center = view.toView(object.center + shift);
+        // A mesh reaches the pixels its triangles reach, far fewer than its
+        // bounding box does (mesh_footprint.h).
+        const bool footprint = object.shape == ShapeKind::Mesh && object.mesh &&
+                               footprint_.build(view, *object.mesh, object.center + shift, cols, rows);
         pixels_.clear();
         for (int py = rows.lo; py <= rows.hi; ++py)
             for (int px = cols.lo; px <= cols.hi; ++px) {
@@ -191,7 +180,8 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
                 if (cover < z) continue;
                 // The object's own least depth in this pixel, when it reaches it.
                 const double here = std::max(
-                    z, nearestInPixel(view, corners, sphere, center, object.radius, px, py));
+                    z, footprint ? footprint_.leastDepth(px, py)
+                                 : nearestInPixel(view, corners, sphere, center, object.radius, px, py));
                 if (here != std::numeric_limits<double>::infinity() && gate >= here && cover >= here)
                     pixels_.push_back(size_t(py) * size_t(view.width) + size_t(px));
             }

@@ -3,10 +3,10 @@
 // the centres, and supersampling to decide them.
 //
 // After the ID buffer is drawn, an object that no centre saw is a candidate when
-// its screen bounds hold an open pixel for it: a pixel that its sphere or box (a
-// mesh's bounding box) reaches (pixel_pyramid.h) and whose square is not proven
-// covered (subsample_gate.h, coverDepth below) nearer than the object's least
-// depth inside that pixel's pyramid. Its open pixels are then cast again at
+// its screen bounds hold an open pixel for it: a pixel that its sphere or box
+// reaches (pixel_pyramid.h), or a mesh's triangles (mesh_footprint.h), and whose
+// square is not proven covered (subsample_gate.h, coverDepth below) nearer than
+// the object's least depth inside that pixel. Its open pixels are then cast again at
 // kFirstLevel x kFirstLevel sub-samples, then at kLastLevel x kLastLevel, each
 // ray with Embree (embree_rays.h), until a ray's nearest object is the candidate.
 // Every unseen object a ray finds first is visible, candidate or not. Sampling
@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "culling/oracle/embree_rays.h"
+#include "culling/oracle/mesh_footprint.h"
+#include "culling/oracle/pixel_pyramid.h"
 #include "culling/oracle/subsample_gate.h"
 #include "culling/raster/id_depth_buffer.h"
 #include "culling/scene/camera.h"
@@ -59,13 +61,7 @@ public:
                 std::vector<int>& undecided, SubsampleCounts& counts);
 
 private:
-    // The view-space basis and the buffer's slopes, for this frame's rays.
-    struct View {
-        glm::dvec3 eye, right, up, forward;
-        double tan_x, tan_y, near, far;
-        int width, height;
-        glm::dvec3 ray(double x, double y) const;  // through continuous pixel point (x, y)
-    };
+    using View = PixelView;
     // +infinity when object i's sphere or bounds cannot reach into pixel
     // (px, py); else a lower bound of its depth there, so that a cover nearer
     // than the bound hides it in that pixel.
@@ -84,6 +80,7 @@ private:
                   double x, double y) const;
 
     SubsampleGate gate_;
+    MeshFootprint footprint_;
     EmbreeRays rays_;
     std::vector<uint8_t> level_;    // per pixel: the finest level cast this frame (0: none)
     std::vector<double> cover_;     // per pixel: coverDepth, valid where cover_frame_ is frame_
