@@ -41,9 +41,10 @@
 // asked, not hidden.
 // After the buffer is drawn, an object no centre saw is a candidate when its
 // bounds reach a pixel whose square is not proven covered nearer than the
-// object's least depth inside that pixel (subsample_gate.h says how a square is
-// proven covered, pixel_pyramid.h how far an object reaches into a pixel). Its
-// open pixels are cast again with Embree rays at 4 x 4 and then
+// object's least depth inside that pixel (subsample_refiner.h says how a square
+// is proven covered: by one convex object, or by two, pair_cover.h;
+// pixel_pyramid.h and mesh_footprint.h how far an object reaches into a pixel).
+// Its open pixels are cast again with Embree rays at 4 x 4 and then
 // 12 x 12 points a pixel (subsample_refiner.h), until one sees it. Both kinds
 // are "sub-sample" and kept out of the PVS, which stays what the pixel centres
 // see (an image at the oracle's resolution has no pixel of them, so a culler
@@ -58,17 +59,18 @@
 // a frame) resolves gaps down to 1/12 pixel. Cost: nothing where
 // every unseen object lies behind wide occluders; elsewhere 160 rays for each
 // open pixel of each candidate that no ray decides. On the shipped scenes
-// (1024 pixels, 12 or 13 frames each, RelWithDebInfo, one core) a frame takes
-// 15 to 40 ms in scenes/default.json, city-3d, city-walk-3d, hidden-movers-3d
-// and mesh-3d, 70 to 320 ms in the forests, rooms, spheres, building-people-3d
-// and walkthrough-3d, 0.6 s in plant-3d and 2 s in bunnies-3d (300 bunnies
-// passing through each other; the 2^22 rays nearly run out), against 3 to 150
-// ms without: most candidates left sit behind two objects that touch or
-// overlap, which no single convex shape covers and no sampling can close, and
+// (scripts/refine-cost.sh: 1024 pixels, the first 48 frames, medians;
+// docs/results/oracle-refine.md) a frame takes 8 to 40 ms in the cities,
+// rooms-3d, building-people-3d, hidden-movers-3d, mesh-3d and the sphere
+// scenes, 77 to 170 ms in plant-3d, the forests and walkthrough-3d, and 1.2 s
+// in bunnies-3d (300 bunnies passing through each other), 1.2x to 14x the
+// oracle alone: most candidates left sit behind seams that neither one convex
+// object nor a box and another cover (two spheres, two meshes, three objects),
+// or behind a face at exactly their depth, and
 // end undecided after all their rays. Hence off by default. Embree alone, one
 // ray a pixel with the objects placed each frame, is no faster than the
-// rasterizer: 70 to 210 ms a frame on the shipped 3D scenes, 1.2x (bunnies-3d)
-// to 31x the rasterized oracle (scripts/refine-cost.sh, first 48 frames),
+// rasterizer: 67 to 181 ms a frame on the shipped 3D scenes, 1.2x (bunnies-3d)
+// to 32x the rasterized oracle (scripts/refine-cost.sh, first 48 frames),
 // so the oracle rasterizes and casts rays only to refine.
 //
 // Shapes outside their dimension (polygons in 3D, meshes in 2D; the loader

@@ -32,6 +32,7 @@ struct PixelPyramid {
     // between the corner rays edges[i] and edges[(i + 1) % 4].
     glm::dvec3 normals[4];
     glm::dvec3 edges[4];
+    double normal_length[4];
 };
 
 // The pyramid of slopes u0 < u1 (left to right) and v0 > v1 (top to bottom).
@@ -45,17 +46,21 @@ PixelPyramid pixelPyramid(const PixelView& view, int px, int py);
 // which lies outside the silhouette.
 bool sphereMeetsPyramid(const PixelPyramid& pyramid, const glm::dvec3& center, double radius);
 
-// A lower bound of the least depth of the sphere's part inside the pyramid, or
-// +infinity when the sphere misses it: the greatest, over the four planes, of
-// the least depth of the sphere's part inside that plane alone (each such part
-// contains the part inside all four). Lowered by 1e-9 of itself for rounding.
+// The least depth of the sphere's part inside the pyramid, or +infinity when
+// the sphere misses it: exact (the sphere's nearest point, a face's or a corner
+// ray's least point, whichever lies in the pyramid), lowered by 1e-9 of itself
+// for rounding. Should rounding leave no such point, the greatest over the four
+// planes of the least depth inside that plane alone stands in: lower still.
 double leastSphereDepthInPyramid(const PixelPyramid& pyramid, const glm::dvec3& center,
                                  double radius);
 
 // The same for a box given by its 8 view-space corners (grid/aabb.h's corner
-// order: bit 0 x, bit 1 y, bit 2 z). +infinity when all corners lie outside one
-// plane; that test is not exact (a box can miss the pyramid diagonally and still
-// pass it), so a box may be kept where it does not reach.
+// order: bit 0 x, bit 1 y, bit 2 z; a rectangular box in any orientation): the
+// least over the corners of the box cut by the pyramid, +infinity when it has
+// none (the box misses the pyramid). A flat box (two corners that coincide)
+// gets the greatest over the four planes of its least depth inside that plane
+// alone, lower than the exact value and +infinity only when all its corners lie
+// outside one plane.
 double leastBoxDepthInPyramid(const PixelPyramid& pyramid, const glm::dvec3 corners[8]);
 
 }  // namespace gridcull

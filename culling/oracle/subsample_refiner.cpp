@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "culling/oracle/pair_cover.h"
 #include "culling/oracle/pixel_pyramid.h"
 #include "culling/scene/ray_intersect.h"
 
@@ -30,10 +31,8 @@ double SubsampleRefiner::coverDepth(const View& view, const Scene& scene,
     constexpr double kOpen = std::numeric_limits<double>::infinity();
     const size_t p = size_t(py) * size_t(view.width) + size_t(px);
     if (cover_frame_[p] == frame_) return cover_[p];
-    // The objects the centres inside the image see are the ones to try. At the
-    // image's border the neighbours' centres outside it have no id, but their
-    // rays are still rays: the nine are cast all the same, so a border pixel is
-    // proven covered as any other.
+    // The objects the centres of the pixel and its neighbours inside the image
+    // see are the ones to try; a border pixel's corners are rays like any other.
     int ids[9];
     int distinct = 0;
     for (int dy = -1; dy <= 1; ++dy) {
@@ -50,10 +49,13 @@ double SubsampleRefiner::coverDepth(const View& view, const Scene& scene,
         const SceneObject& object = scene.objects[size_t(ids[k])];
         const glm::dvec3& shift = shifts[size_t(ids[k])];
         if (object.shape != ShapeKind::Sphere && object.shape != ShapeKind::Box) continue;
+        // The rays through the pixel's four corners: when all four meet the
+        // object, its convex outline holds the square, no deeper there than at
+        // the deepest corner (subsample_gate.h).
         double farthest = 0.0;
-        for (int dy = -1; dy <= 1 && farthest < best; ++dy) {
-            for (int dx = -1; dx <= 1 && farthest < best; ++dx) {
-                const glm::dvec3 dir = view.ray(px + dx + 0.5, py + dy + 0.5);
+        for (int dy = 0; dy <= 1 && farthest < best; ++dy) {
+            for (int dx = 0; dx <= 1 && farthest < best; ++dx) {
+                const glm::dvec3 dir = view.ray(px + dx, py + dy);
                 double s0, s1, s;
                 const bool line = object.shape == ShapeKind::Sphere
                                       ? lineSphere(view.eye, dir, object.center + shift,
@@ -65,8 +67,43 @@ double SubsampleRefiner::coverDepth(const View& view, const Scene& scene,
         }
         best = std::min(best, farthest);
     }
+    // A seam: two of them, a box and another, may cover it together.
+    if (best == kOpen && distinct >= 2) best = pairCoverDepth(view, scene, shifts, ids, distinct, px, py);
     cover_[p] = best;
     cover_frame_[p] = frame_;
+    return best;
+}
+
+double SubsampleRefiner::pairCoverDepth(const View& view, const Scene& scene,
+                                        const std::vector<glm::dvec3>& shifts, const int* ids,
+                                        int distinct, int px, int py) const {
+    CoverSolid solids[9];
+    Silhouette outlines[9];
+    for (int k = 0; k < distinct; ++k) {
+        const SceneObject& object = scene.objects[size_t(ids[k])];
+        const glm::dvec3& shift = shifts[size_t(ids[k])];
+        CoverSolid& solid = solids[k];
+        if (object.shape == ShapeKind::Sphere) {
+            solid.sphere = true;
+            solid.center = object.center + shift;
+            solid.radius = object.radius;
+            solid.box = {solid.center - solid.radius, solid.center + solid.radius};
+        } else if (object.shape == ShapeKind::Box) {
+            solid.box = object.box.translated(shift);
+            // A box holding the eye covers everything alone (at depth near).
+            if (!solid.box.contains(view.eye)) outlines[k] = boxSilhouette(view, solid.box);
+        }
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < distinct; ++i) {
+        if (outlines[i].count < 3) continue;  // a sphere, a mesh, or no outline
+        for (int j = 0; j < distinct; ++j) {
+            const ShapeKind shape = scene.objects[size_t(ids[j])].shape;
+            if (j == i || (shape != ShapeKind::Sphere && shape != ShapeKind::Box)) continue;
+            best = std::min(best, gridcull::pairCoverDepth(view, px, py, solids[i], outlines[i],
+                                                          solids[j], outlines[j]));
+        }
+    }
     return best;
 }
 
@@ -171,6 +208,13 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
         // bounding box does (mesh_footprint.h).
         const bool footprint = object.shape == ShapeKind::Mesh && object.mesh &&
                                footprint_.build(view, *object.mesh, object.center + shift, cols, rows);
+        // A box's (or a mesh's bounding box's) outline tells cheaply which pixels
+        // it reaches; its least depth there is searched only where something
+        // covers the pixel (over the background any depth may show).
+        Silhouette outline;
+        if (!sphere && !footprint && !bounds.contains(view.eye)) outline = boxSilhouette(view, bounds);
+        const bool outlined = outline.count >= 3;
+        constexpr double kNothing = std::numeric_limits<double>::infinity();
         pixels_.clear();
         for (int py = rows.lo; py <= rows.hi; ++py)
             for (int px = cols.lo; px <= cols.hi; ++px) {
@@ -178,11 +222,14 @@ void SubsampleRefiner::refine(const Scene& scene, const Camera& camera,
                 if (gate < z) continue;
                 const double cover = coverDepth(view, scene, shifts, buffer, px, py);
                 if (cover < z) continue;
+                if (outlined && !outlineMeetsPixel(outline, px, py)) continue;
                 // The object's own least depth in this pixel, when it reaches it.
-                const double here = std::max(
-                    z, footprint ? footprint_.leastDepth(px, py)
-                                 : nearestInPixel(view, corners, sphere, center, object.radius, px, py));
-                if (here != std::numeric_limits<double>::infinity() && gate >= here && cover >= here)
+                double here = z;
+                if (!outlined || std::min(gate, cover) != kNothing)
+                    here = std::max(z, footprint ? footprint_.leastDepth(px, py)
+                                                 : nearestInPixel(view, corners, sphere, center,
+                                                                  object.radius, px, py));
+                if (here != kNothing && gate >= here && cover >= here)
                     pixels_.push_back(size_t(py) * size_t(view.width) + size_t(px));
             }
         if (pixels_.empty()) continue;

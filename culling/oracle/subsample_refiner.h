@@ -67,14 +67,21 @@ private:
     // than the bound hides it in that pixel.
     double nearestInPixel(const View& view, const glm::dvec3 corners[8], bool sphere,
                           const glm::dvec3& center, double radius, int px, int py) const;
-    // The farthest depth, over the nine centres of the pixel and its neighbours,
-    // of a sphere or box that all nine centres' rays meet (nearest or not), the
-    // least such over the objects those centres see; +infinity when none does.
-    // Convexity makes that object cover the whole pixel no farther than that
-    // (subsample_gate.h), so an object behind it cannot show there: this closes
-    // the edges where one object passes behind another. Cached per frame.
+    // The farthest depth, over the four corners of the pixel, of a sphere or
+    // box that all four corners' rays meet (nearest or not), the least such over
+    // the objects the centres of the pixel and its eight neighbours see; else the
+    // least depth below which two of them cover it (pairCoverDepth); +infinity
+    // when neither holds. Convexity makes such an object cover the whole pixel
+    // no farther than that (subsample_gate.h), so an object behind it cannot
+    // show there: this closes the edges where one object passes behind another.
+    // Cached per frame.
     double coverDepth(const View& view, const Scene& scene, const std::vector<glm::dvec3>& shifts,
                       const IdDepthBuffer& buffer, int px, int py);
+    // The least depth below which two of the `distinct` objects the nine
+    // centres see, a box and a sphere or box, cover the pixel together
+    // (pair_cover.h); +infinity when no pair does.
+    double pairCoverDepth(const View& view, const Scene& scene, const std::vector<glm::dvec3>& shifts,
+                          const int* ids, int distinct, int px, int py) const;
     // The index of the object the ray through (x, y) sees first, or -1.
     int nearestAt(const View& view, const Scene& scene, const std::vector<glm::dvec3>& shifts,
                   double x, double y) const;

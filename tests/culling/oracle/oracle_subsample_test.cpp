@@ -115,6 +115,25 @@ TEST(OracleSubsample, AnObjectBehindOneWideOccluderIsNoCandidate) {
     EXPECT_EQ(out.stats.get(Counter::RefineRays), 0);
 }
 
+// Two walls that touch inside a pixel column (u = 0.3 / 32): no single object
+// spans the nine centres around the seam, but the two together cover it
+// (pair_cover.h), so the sphere behind is no candidate.
+TEST(OracleSubsample, AnObjectBehindTwoTouchingWallsIsNoCandidate) {
+    Scene scene = test::scene3d();
+    const double z0 = kEye.z + kWallDepth, z1 = z0 + 1.0, seam_u = 0.3 / 32;
+    test::addBox(scene, kWallLeft, {worldX(2.0, kWallDepth), 0, z0}, {worldX(seam_u, kWallDepth), 100, z1});
+    test::addBox(scene, kWallRight, {worldX(seam_u, kWallDepth), 0, z0}, {worldX(-2.0, kWallDepth), 100, z1});
+    test::addSphere(scene, kBehind, {50, 50, 40}, 3.0);
+    test::setCamera(scene, kEye, {50, 50, 100}, 90.0, 0.1, 1000.0);
+    scene.camera.aspect = 1.0;
+    scene.finalize();
+    const FrameResult out = cull(scene, 1);
+    EXPECT_EQ(out.pvs, (V{kWallLeft, kWallRight}));
+    EXPECT_TRUE(out.sub_sample_undecided.empty());
+    EXPECT_EQ(out.stats.get(Counter::SubSampleCandidates), 0);
+    EXPECT_EQ(out.stats.get(Counter::RefineRays), 0);
+}
+
 // The image's border pixels are proven covered as any other: the rays of their
 // neighbours' centres outside the image are rays all the same. A box behind a
 // wall, both wider than the image, is no candidate.
