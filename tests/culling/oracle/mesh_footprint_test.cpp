@@ -11,6 +11,7 @@
 #include "culling/oracle/mesh_footprint.h"
 #include "culling/scene/ray_intersect.h"
 #include "culling/scene/seeded_random.h"
+#include "tests/culling/oracle/square_pixel_view.h"
 #include "tests/common/oracle_test_scenes.h"
 
 namespace gridcull {
@@ -22,18 +23,9 @@ constexpr int kFan = 12;   // rays per side of a pixel square, its edges include
 // than the footprint's corner depths, so they agree to some ulps, not exactly.
 constexpr double kBruteRounding = 1e-9;
 
-// The eye at the origin looking down +z, fov 90 each way.
+// The eye at the origin looking down +z, fov 90 each way (square_pixel_view.h).
 PixelView testView() {
-    PixelView view;
-    view.eye = {0, 0, 0};
-    view.right = {1, 0, 0};
-    view.up = {0, 1, 0};
-    view.forward = {0, 0, 1};
-    view.tan_x = view.tan_y = 1.0;
-    view.near = 0.1;
-    view.far = 1000.0;
-    view.width = view.height = kSide;
-    return view;
+    return test::squarePixelView(kSide);
 }
 
 const ScreenRange kWhole{0, kSide - 1};

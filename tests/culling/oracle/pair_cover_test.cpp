@@ -11,6 +11,7 @@
 #include "culling/oracle/pair_cover.h"
 #include "culling/scene/ray_intersect.h"
 #include "culling/scene/seeded_random.h"
+#include "tests/culling/oracle/square_pixel_view.h"
 
 namespace gridcull {
 namespace {
@@ -18,20 +19,9 @@ namespace {
 constexpr int kSide = 64;  // pixels of the test image, each way
 constexpr int kFan = 24;   // rays per side of the pixel square, its edges included
 
-// The eye at the origin looking down +z, fov 90 each way: pixel column px spans
-// slopes u in [px / 32 - 1, (px + 1) / 32 - 1], row py spans v from 1 - py / 32
-// down to 1 - (py + 1) / 32.
+// The eye at the origin looking down +z, fov 90 each way (square_pixel_view.h).
 PixelView testView() {
-    PixelView view;
-    view.eye = {0, 0, 0};
-    view.right = {1, 0, 0};
-    view.up = {0, 1, 0};
-    view.forward = {0, 0, 1};
-    view.tan_x = view.tan_y = 1.0;
-    view.near = 0.1;
-    view.far = 1000.0;
-    view.width = view.height = kSide;
-    return view;
+    return test::squarePixelView(kSide);
 }
 
 CoverSolid box(const glm::dvec3& lo, const glm::dvec3& hi) {
