@@ -4,7 +4,9 @@
 #     their tests (labelled "core"): the proof that they need no GL, GLFW or ImGui.
 #     Not sanitized: stage 2 runs the same tests under the sanitizers, and these
 #     are the full build's core tests (same compiler and flags), so stage 3 skips
-#     them; the long random sweeps run here on all their scenes;
+#     them; the long random sweeps run here on all their scenes. Built in build/,
+#     which stage 3 turns into the full build: the core's objects are reused, not
+#     compiled twice;
 #  2. the whole program built with GRIDCULL_SANITIZE=ON and every test but the
 #     screenshots under AddressSanitizer and UndefinedBehaviorSanitizer, and
 #     LeakSanitizer but in the app tests (the reason is below):
@@ -43,8 +45,8 @@ stage_start=$SECONDS
 stage_done() { echo "== $1: $((SECONDS - stage_start)) s =="; stage_start=$SECONDS; }
 
 echo "== 1. core libraries alone (no GL, GLFW or ImGui) =="
-GRIDCULL_BUILD_DIR=build-core scripts/build.sh -DGRIDCULL_CORE_ONLY=ON
-ctest --test-dir build-core --output-on-failure -j"$jobs"
+scripts/build.sh -DGRIDCULL_CORE_ONLY=ON
+ctest --test-dir build --output-on-failure -j"$jobs"
 stage_done "1. core libraries alone"
 
 echo "== 2. the whole program under ASan + LSan + UBSan =="
@@ -88,7 +90,9 @@ unset ASAN_OPTIONS UBSAN_OPTIONS
 stage_done "2. whole program sanitized"
 
 echo "== 3. full build =="
-scripts/build.sh
+# The same build directory as stage 1, with the rest switched on: grid/, culling/
+# and core_tests are up to date, so only ui/, app/ and their tests compile here.
+scripts/build.sh -DGRIDCULL_CORE_ONLY=OFF
 with_display ctest --test-dir build --output-on-failure -j"$jobs" -LE core
 stage_done "3. full build"
 
