@@ -10,6 +10,7 @@
 # usage: scripts/trade-figures.sh BUILD_DIR OUT_DIR [FRAMES [RUNS]]
 #   FRAMES  frames of each 3D scene (default 60; figure1-2d runs all 200)
 #   RUNS    runs of each setting and bench (default 2)
+# SCENES="a b" redoes only those scenes (default all three), e.g. after one changed.
 # About 25 minutes on the 2-core development machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,7 +35,14 @@ figure() {  # scene-name frames algorithms
     run "$exe" bench "$root/scenes/$scene.json" --algo "all,$algos" --frames "$n" --runs "$runs" \
         --draw gl --baseline all --csv "$out/$scene-frame.csv" | tee "$out/$scene-frame.txt"
 }
-for scene in figure1-2d forest-walk-3d city-walk-3d; do mkdir -p "$out/$scene"; done
-figure figure1-2d 200 vfc,rgvc
-figure forest-walk-3d "$frames" vfc,rgvc,hzb-tbv,lazy-grid,bsp-oq
-figure city-walk-3d "$frames" vfc,rgvc,hzb-tbv,lazy-grid,bsp-oq
+scenes=" ${SCENES:-figure1-2d forest-walk-3d city-walk-3d} "
+for scene in $scenes; do
+    case "$scene" in
+    figure1-2d | forest-walk-3d | city-walk-3d) mkdir -p "$out/$scene" ;;
+    *) echo "SCENES: '$scene' is not one of figure1-2d forest-walk-3d city-walk-3d" >&2; exit 2 ;;
+    esac
+done
+wanted() { [[ "$scenes" == *" $1 "* ]]; }
+if wanted figure1-2d; then figure figure1-2d 200 vfc,rgvc; fi
+if wanted forest-walk-3d; then figure forest-walk-3d "$frames" vfc,rgvc,hzb-tbv,lazy-grid,bsp-oq; fi
+if wanted city-walk-3d; then figure city-walk-3d "$frames" vfc,rgvc,hzb-tbv,lazy-grid,bsp-oq; fi
