@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "culling/registry/registry.h"
+#include "ui/trade_plot.h"
 
 namespace gridcull {
 
@@ -74,8 +75,9 @@ void TradeExplorer::poll(const KnobValues& knobs) {
         std::lock_guard<std::mutex> lock(mutex_);
         // Points only grow: copy the new ones (nothing is allocated on a frame
         // without news).
-        for (size_t i = view_.points.size(); i < measured_.size(); ++i)
-            view_.points.push_back(measured_[i]);
+        const size_t before = view_.points.size();
+        for (size_t i = before; i < measured_.size(); ++i) view_.points.push_back(measured_[i]);
+        if (view_.points.size() != before) view_.layout = tradePlotLayout(view_.points, {});
         finished = finished_ && view_.running;
         if (finished) view_.error = error_;
     }

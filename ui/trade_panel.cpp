@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
 #include "ui/trade_plot.h"
 #include "ui/ui_units.h"
 
@@ -26,9 +28,10 @@ TradeAction drawTradePanel(const TradeCurveView& view, const std::string& select
     } else {
         const bool stale = !view.algorithm.empty() && view.algorithm != selected;
         const bool fresh = view.algorithm.empty() || stale;
-        const std::string label =
-            (fresh ? "Measure " : "Measure again ") + selected + "'s trade";
-        if (ImGui::Button(label.c_str())) action.start = true;
+        char label[160];  // a longer algorithm name is cut, never overrun
+        std::snprintf(label, sizeof label, "%s%s's trade", fresh ? "Measure " : "Measure again ",
+                      selected.c_str());
+        if (ImGui::Button(label)) action.start = true;
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Each knob of its family over the values gridcull trade sweeps, one at a time\n"
@@ -45,6 +48,7 @@ TradeAction drawTradePanel(const TradeCurveView& view, const std::string& select
     TradePlotInput input;
     input.points = &view.points;
     input.current = view.current;
+    input.layout = &view.layout;
     const TradePlotResult result =
         drawTradePlot(input, ImGui::GetContentRegionAvail().x, scaledPixels(kPlotHeight));
     if (!view.running && result.clicked >= 0 && view.algorithm == selected)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ui/trade_front.h"
+#include "ui/trade_plot.h"
 
 namespace gridcull {
 
@@ -15,6 +16,9 @@ namespace gridcull {
 struct TradeCurveView {
     std::string algorithm;  // what was swept ("" before the first sweep)
     std::vector<TradePoint> points;
+    // tradePlotLayout(points, {}), made again whenever points grow, so that the
+    // panel, drawn every frame, allocates nothing.
+    TradePlotLayout layout;
     int current = -1;  // the point whose setting the cullers now use, or -1
     int frames = 0, runs = 0;
     int settings = 0;          // settings the sweep measures in all

@@ -3,9 +3,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "ui/palette.h"
 #include "ui/ui_units.h"
@@ -30,11 +30,11 @@ ImU32 colorOf(Swatch swatch, float alpha = 1.0f) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, alpha));
 }
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
+// A tick's label, "%.3g", in a buffer of its own (no allocation).
+struct Number {
+    char text[32];
+    explicit Number(double v) { std::snprintf(text, sizeof text, "%.3g", v); }
+};
 
 // Maps data to the plot box.
 struct Axes {
@@ -85,16 +85,29 @@ Axes axesFor(const std::vector<TradePoint>& points, double target, ImVec2 lo, Im
     return a;
 }
 
-// Decades (and 2, 5) on a log scale, five steps on a linear one.
-std::vector<double> ticksOf(double lo, double hi, bool log) {
-    std::vector<double> ticks;
+// Decades (and 2, 5) on a log scale, five steps on a linear one. A fixed array:
+// costs lie between 1e-6 ms (axesFor's floor) and at most about 1e9 ms, 16
+// decades of three ticks; beyond kMaxTicks the rest are left out.
+constexpr size_t kMaxTicks = 64;
+struct Ticks {
+    std::array<double, kMaxTicks> values{};
+    size_t count = 0;
+    void add(double v) {
+        if (count < kMaxTicks) values[count++] = v;
+    }
+    const double* begin() const { return values.data(); }
+    const double* end() const { return values.data() + count; }
+};
+
+Ticks ticksOf(double lo, double hi, bool log) {
+    Ticks ticks;
     if (!log) {
-        for (int k = 0; k <= 4; ++k) ticks.push_back(lo + (hi - lo) * k / 4);
+        for (int k = 0; k <= 4; ++k) ticks.add(lo + (hi - lo) * k / 4);
         return ticks;
     }
     for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
         for (double m : {1.0, 2.0, 5.0})
-            if (decade * m >= lo && decade * m <= hi) ticks.push_back(decade * m);
+            if (decade * m >= lo && decade * m <= hi) ticks.add(decade * m);
     return ticks;
 }
 
@@ -105,16 +118,16 @@ void drawAxes(ImDrawList& draw, const Axes& a) {
     for (double v : ticksOf(a.x0, a.x1, a.log_x)) {
         const float x = float(a.xOf(v));
         draw.AddLine(ImVec2(x, a.lo.y), ImVec2(x, a.hi.y), colorOf(Swatch::LineGrey, 0.35f));
-        const std::string label = number(v);
-        const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-        draw.AddText(ImVec2(x - size.x / 2, a.hi.y + 2), text, label.c_str());
+        const Number label(v);
+        const ImVec2 size = ImGui::CalcTextSize(label.text);
+        draw.AddText(ImVec2(x - size.x / 2, a.hi.y + 2), text, label.text);
     }
     for (double v : ticksOf(a.y0, a.y1, a.log_y)) {
         const float y = float(a.yOf(v));
         draw.AddLine(ImVec2(a.lo.x, y), ImVec2(a.hi.x, y), colorOf(Swatch::LineGrey, 0.35f));
-        const std::string label = number(v);
-        const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-        draw.AddText(ImVec2(a.lo.x - size.x - 4, y - size.y / 2), text, label.c_str());
+        const Number label(v);
+        const ImVec2 size = ImGui::CalcTextSize(label.text);
+        draw.AddText(ImVec2(a.lo.x - size.x - 4, y - size.y / 2), text, label.text);
     }
 }
 
@@ -125,7 +138,47 @@ void dashedLine(ImDrawList& draw, ImVec2 from, ImVec2 to, ImU32 color) {
                      color, kFineLine);
 }
 
+// The most front labels one plot places; beyond, a label is left out, as a
+// crowded one is (the tooltip and the CSV name every point).
+constexpr size_t kMaxLabels = 64;
+
 }  // namespace
+
+TradePlotLayout tradePlotLayout(const std::vector<TradePoint>& points,
+                                const std::vector<std::string>& series_order) {
+    TradePlotLayout layout;
+    layout.point_count = points.size();
+    // Colour slots: series_order first, then algorithms in order of appearance.
+    std::vector<std::string> dealt = series_order;
+    auto slotOf = [&](const std::string& name) {
+        const auto it = std::find(dealt.begin(), dealt.end(), name);
+        if (it != dealt.end()) return int(it - dealt.begin());
+        dealt.push_back(name);
+        return int(dealt.size()) - 1;
+    };
+    for (const TradePoint& p : points) {
+        const int slot = slotOf(p.algorithm);
+        layout.point_series.push_back(slot);
+        if (std::find(layout.names.begin(), layout.names.end(), p.algorithm) != layout.names.end())
+            continue;
+        layout.names.push_back(p.algorithm);
+        layout.name_series.push_back(slot);
+    }
+    for (const std::string& name : layout.names) {
+        std::vector<TradePoint> own;
+        std::vector<size_t> index;
+        for (size_t i = 0; i < points.size(); ++i)
+            if (points[i].algorithm == name) {
+                own.push_back(points[i]);
+                index.push_back(i);
+            }
+        std::vector<size_t> front;
+        for (size_t k : paretoFront(own)) front.push_back(index[k]);
+        layout.fronts.push_back(std::move(front));
+    }
+    layout.front = paretoFront(points);
+    return layout;
+}
 
 TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float height) {
     TradePlotResult result;
@@ -141,15 +194,11 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     const bool clicked = ImGui::IsItemClicked();
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     const float line = ImGui::GetTextLineHeight();
-    // Series in order of first appearance.
-    std::map<std::string, int> series;  // algorithm -> colour
-    for (const std::string& name : input.series_order) series.emplace(name, int(series.size()));
-    std::vector<std::string> names;  // those plotted, in order of appearance
-    for (const TradePoint& p : points) {
-        if (std::find(names.begin(), names.end(), p.algorithm) != names.end()) continue;
-        names.push_back(p.algorithm);
-        series.emplace(p.algorithm, int(series.size()));
-    }
+    TradePlotLayout made;
+    const bool given = input.layout && input.layout->point_count == points.size();
+    if (!given) made = tradePlotLayout(points, input.series_order);
+    const TradePlotLayout& layout = given ? *input.layout : made;
+    const std::vector<std::string>& names = layout.names;
     // Above the box a row for the y axis's name and the legend; the legend
     // takes a row of its own when both do not fit in one.
     const char* y_name = "PVS/exact (crosses: false culls)";
@@ -188,17 +237,10 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     }
     // Each algorithm's front, joined in increasing cost.
     for (size_t s = 0; s < names.size(); ++s) {
-        std::vector<TradePoint> own;
-        std::vector<size_t> index;
-        for (size_t i = 0; i < points.size(); ++i)
-            if (points[i].algorithm == names[s]) {
-                own.push_back(points[i]);
-                index.push_back(i);
-            }
-        const std::vector<size_t> front = paretoFront(own);
+        const std::vector<size_t>& front = layout.fronts[s];
         for (size_t k = 1; k < front.size(); ++k)
-            draw.AddLine(at(own[front[k - 1]]), at(own[front[k]]),
-                         seriesColor(series[names[s]], 0.8f), kBoldLine);
+            draw.AddLine(at(points[front[k - 1]]), at(points[front[k]]),
+                         seriesColor(layout.name_series[s], 0.8f), kBoldLine);
     }
     const float r = scaledPixels(4.0f);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -208,7 +250,7 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
             draw.AddLine(ImVec2(c.x - r, c.y - r), ImVec2(c.x + r, c.y + r), red, kBoldLine);
             draw.AddLine(ImVec2(c.x - r, c.y + r), ImVec2(c.x + r, c.y - r), red, kBoldLine);
         } else {
-            draw.AddCircleFilled(c, r, seriesColor(series[points[i].algorithm]));
+            draw.AddCircleFilled(c, r, seriesColor(layout.point_series[i]));
         }
     }
     if (input.chosen >= 0 && size_t(input.chosen) < points.size()) {
@@ -225,25 +267,29 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
     // The front's settings named beside their points: what to set. A label
     // goes above its point, else below, else (crowded) is left out: the
     // tooltip and the CSV name every point.
-    std::vector<ImVec4> placed;  // x0, y0, x1, y1
+    std::array<ImVec4, kMaxLabels> placed;  // x0, y0, x1, y1
+    size_t placed_count = 0;
     auto overlaps = [&](const ImVec4& a) {
-        for (const ImVec4& b : placed)
+        for (size_t k = 0; k < placed_count; ++k) {
+            const ImVec4& b = placed[k];
             if (a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w) return true;
+        }
         return false;
     };
-    for (size_t i : paretoFront(points)) {
+    for (size_t i : layout.front) {
+        if (placed_count == kMaxLabels) break;
         const std::string& label = points[i].setting;
         const size_t colon = label.find(':');
         // The knob and value; the base setting by its algorithm's name.
-        const std::string knob = colon == std::string::npos ? label : label.substr(colon + 1);
+        const char* knob = label.c_str() + (colon == std::string::npos ? 0 : colon + 1);
         const ImVec2 c = at(points[i]);
-        const ImVec2 size = ImGui::CalcTextSize(knob.c_str());
+        const ImVec2 size = ImGui::CalcTextSize(knob);
         const float x = std::min(c.x + 1.5f * r, hi.x - size.x - 2);
         for (float y : {c.y - size.y - r, c.y + r}) {
             const ImVec4 box(x, y, x + size.x, y + size.y);
             if (overlaps(box)) continue;
-            placed.push_back(box);
-            draw.AddText(ImVec2(x, y), colorOf(Swatch::LightGrey), knob.c_str());
+            placed[placed_count++] = box;
+            draw.AddText(ImVec2(x, y), colorOf(Swatch::LightGrey), knob);
             break;
         }
     }
@@ -255,7 +301,7 @@ TradePlotResult drawTradePlot(const TradePlotInput& input, float width, float he
         x -= size.x;
         draw.AddText(ImVec2(x, legend_y), colorOf(Swatch::LightGrey), names[s].c_str());
         draw.AddCircleFilled(ImVec2(x - 0.7f * line, legend_y + size.y / 2), r,
-                             seriesColor(series[names[s]]));
+                             seriesColor(layout.name_series[s]));
         x -= 2.0f * line;
     }
 

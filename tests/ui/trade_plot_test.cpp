@@ -3,6 +3,8 @@
 // reports it (what the window applies).
 #include <cfloat>
 #include <set>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -78,6 +80,25 @@ TEST_F(TradePlotTest, EveryPointCanBeHoveredAndAClickReportsIt) {
     const TradePlotResult press = frame(input, found_x, found_y, true);
     EXPECT_EQ(press.clicked, 2);
     EXPECT_EQ(frame(input, found_x, found_y, false).clicked, -1);  // released
+}
+
+// The layout the window keeps: each algorithm's front is paretoFront of its own
+// points, the named front that of all, and colours are dealt in series_order first.
+TEST(TradePlotLayout, FrontsAndColoursFollowThePoints) {
+    const std::vector<TradePoint> points = {
+        point("a", "a", 0.2, 3.0),       point("b", "b", 1.0, 1.5),
+        point("a:k=1", "a", 0.5, 2.0),   point("a:k=2", "a", 4.0, 1.1),
+        point("a:k=3", "a", 5.0, 2.5),   point("b:j=1", "b", 0.9, 1.6, /*false culls*/ 1),
+        point("b:j=2", "b", 8.0, 1.2)};
+    const TradePlotLayout layout = tradePlotLayout(points, {"b", "z"});
+    EXPECT_EQ(layout.point_count, points.size());
+    ASSERT_EQ(layout.names, (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(layout.name_series, (std::vector<int>{2, 0}));  // "b" and "z" dealt first
+    EXPECT_EQ(layout.point_series, (std::vector<int>{2, 0, 2, 2, 2, 0, 0}));
+    ASSERT_EQ(layout.fronts.size(), 2u);
+    EXPECT_EQ(layout.fronts[0], (std::vector<size_t>{0, 2, 3}));  // a:k=3 is beaten by a:k=2
+    EXPECT_EQ(layout.fronts[1], (std::vector<size_t>{1, 6}));     // b:j=1 falsely culls
+    EXPECT_EQ(layout.front, paretoFront(points));
 }
 
 TEST_F(TradePlotTest, NoPointsDrawsANoteAndReportsNothing) {
