@@ -43,7 +43,7 @@ std::vector<std::string> solidsAroundEye(const Scene& scene, double t) {
 
 // Frames whose eye is inside a static solid, by scene file, where known.
 int knownFramesInside(const std::string& file) {
-    if (file == "default.json") return 11;         // the fly-through crosses sphere 987
+    if (file == "default.json") return 11;         // the fly-through crosses the cluster
     if (file == "forest-walk-3d.json") return 16;  // the walk brushes through trunks
     return 0;
 }
