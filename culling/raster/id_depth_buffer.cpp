@@ -6,9 +6,14 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "culling/raster/level_box_run.h"
 #include "culling/raster/pixel_range.h"
 #include "culling/scene/ray_intersect.h"
 
@@ -100,6 +105,29 @@ void IdDepthBuffer::begin(const Camera& camera) {
     dirty_cols_ = dirty_rows_ = last_cols_ = last_rows_ = ScreenRange{INT_MAX, -1};
 }
 
+namespace {
+
+// The largest of `farthest` and row[lo..end). Depths are never NaN, so the
+// order of the comparisons does not matter: SSE2 (every x86-64 CPU) takes four
+// at a time in two independent chains, where one chain of scalar max would wait
+// on each previous one.
+double spanMax(const double* row, int lo, int end, double farthest) {
+    int px = lo;
+#if defined(__SSE2__)
+    __m128d a = _mm_set1_pd(farthest), b = a;
+    for (; px + 4 <= end; px += 4) {
+        a = _mm_max_pd(a, _mm_loadu_pd(row + px));
+        b = _mm_max_pd(b, _mm_loadu_pd(row + px + 2));
+    }
+    a = _mm_max_pd(a, b);
+    farthest = std::max(_mm_cvtsd_f64(a), _mm_cvtsd_f64(_mm_unpackhi_pd(a, a)));
+#endif
+    for (; px < end; ++px) farthest = std::max(farthest, row[px]);
+    return farthest;
+}
+
+}  // namespace
+
 void IdDepthBuffer::refreshTiles() {
     last_cols_ = dirty_cols_;
     last_rows_ = dirty_rows_;
@@ -116,11 +144,9 @@ void IdDepthBuffer::refreshTiles() {
             double& tile = tile_far_[size_t(ty) * size_t(tiles_x_) + size_t(tx)];
             const double old_far = tile;
             double farthest = 0.0;
-            for (int py = ty * kTile; py < row_end && farthest < old_far; ++py) {
-                const double* row = depth_.data() + size_t(py) * size_t(width_);
-                for (int px = tx * kTile; px < col_end; ++px)
-                    farthest = std::max(farthest, row[px]);
-            }
+            for (int py = ty * kTile; py < row_end && farthest < old_far; ++py)
+                farthest = spanMax(depth_.data() + size_t(py) * size_t(width_), tx * kTile, col_end,
+                                   farthest);
             tile = farthest;
         }
     }
@@ -320,9 +346,9 @@ bool IdDepthBuffer::boxCandidates(const Aabb& box, ScreenRange& cols, ScreenRang
     return !cols.empty() && !rows.empty();
 }
 
-template <typename Visit>
+template <typename Visit, typename LevelRun>
 void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange& cols,
-                               const ScreenRange& rows, Visit&& visit) const {
+                               const ScreenRange& rows, Visit&& visit, LevelRun&& level_run) const {
     // The slab test of lineBox, term for term, with its reciprocals 1 / dir[a]
     // taken from the frame's tables where dir[a] depends on the row alone or on
     // the column alone (see begin()); only the remaining axes divide per pixel.
@@ -331,28 +357,31 @@ void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange&
     // (rare: one row or column at most) takes lineBox itself.
     const double b_lo[3] = {box.min.x - eye_.x, box.min.y - eye_.y, box.min.z - eye_.z};
     const double b_hi[3] = {box.max.x - eye_.x, box.max.y - eye_.y, box.max.z - eye_.z};
-    // The common case, a level camera: two axes by column, one by row, no zero
-    // component anywhere in the frame's tables.
-    int column_axes[3], column_count = 0;
+    // The common case, a level camera: every axis by column or by row (two and
+    // one, or one and two when it looks along a world axis), no zero component
+    // anywhere in the frame's tables.
+    int column_axes[3], column_count = 0, row_axes[3], row_count = 0;
     bool pixel_axis = false;
     for (int a = 0; a < 3; ++a) {
         if (axis_mode_[a] == AxisMode::Column) column_axes[column_count++] = a;
+        if (axis_mode_[a] == AxisMode::Row) row_axes[row_count++] = a;
         if (axis_mode_[a] == AxisMode::Pixel) pixel_axis = true;
     }
-    const bool two_columns = column_count == 2 && !pixel_axis && !any_column_zero_;
-    const int xa = column_axes[0], za = column_axes[1];
-    ScreenRange hit_cols{INT_MAX, -1};  // two_columns: the columns that may hit
-    if (two_columns) {
+    const bool level = column_count >= 1 && !pixel_axis && !any_column_zero_;
+    ScreenRange hit_cols{INT_MAX, -1};  // level: the columns that may hit
+    if (level) {
         // The column axes' slabs depend on the column alone: one interval per
         // column, shared by every row of this box.
-        const double* inv_x = column_inv_.data() + size_t(xa) * size_t(width_);
-        const double* inv_z = column_inv_.data() + size_t(za) * size_t(width_);
-        const double x_lo = b_lo[xa], x_hi = b_hi[xa], z_lo = b_lo[za], z_hi = b_hi[za];
         for (int px = cols.lo; px <= cols.hi; ++px) {
-            const double tx0 = x_lo * inv_x[px], tx1 = x_hi * inv_x[px];
-            const double tz0 = z_lo * inv_z[px], tz1 = z_hi * inv_z[px];
-            const double lo = std::max(std::min(tx0, tx1), std::min(tz0, tz1));
-            const double hi = std::min(std::max(tx0, tx1), std::max(tz0, tz1));
+            double lo = -std::numeric_limits<double>::infinity();
+            double hi = std::numeric_limits<double>::infinity();
+            for (int k = 0; k < column_count; ++k) {
+                const int a = column_axes[k];
+                const double inv = column_inv_[size_t(a) * size_t(width_) + size_t(px)];
+                const double t0 = b_lo[a] * inv, t1 = b_hi[a] * inv;
+                lo = std::max(lo, std::min(t0, t1));
+                hi = std::min(hi, std::max(t0, t1));
+            }
             box_col_lo_[size_t(px)] = lo;
             box_col_hi_[size_t(px)] = hi;
             // A pixel of a column whose interval is empty or wholly behind the
@@ -376,26 +405,23 @@ void IdDepthBuffer::forBoxHits(const Aabb& box, double z_min, const ScreenRange&
             row_zero = row_zero || d == 0.0;
             row_inv[a] = 1.0 / d;
         }
-        if (two_columns && !row_zero) {
-            // The row axis's slab is one interval for the whole row, the column
+        if (level && !row_zero) {
+            // The row axes' slabs are one interval for the whole row, the column
             // axes' one per column (above): the pixel's interval is their
             // intersection. Same products, same min / max as lineBox (in another
             // order, which max and min do not see).
-            const int ra = 3 - xa - za;
-            const double r0 = b_lo[ra] * row_inv[ra], r1 = b_hi[ra] * row_inv[ra];
-            const double row_lo = std::min(r0, r1), row_hi = std::max(r0, r1);
+            double row_lo = -std::numeric_limits<double>::infinity();
+            double row_hi = std::numeric_limits<double>::infinity();
+            for (int k = 0; k < row_count; ++k) {
+                const int a = row_axes[k];
+                const double r0 = b_lo[a] * row_inv[a], r1 = b_hi[a] * row_inv[a];
+                row_lo = std::max(row_lo, std::min(r0, r1));
+                row_hi = std::min(row_hi, std::max(r0, r1));
+            }
             if (row_lo > row_hi) continue;
-            const double* col_lo = box_col_lo_.data();
-            const double* col_hi = box_col_hi_.data();
             bool stop = false;
-            forTileSegments(py, hit_cols.lo, hit_cols.hi, z_min, [&](int px) {
-                if (stop || depth_row[px] <= z_min) return;
-                const double lo = std::max(row_lo, col_lo[px]);
-                const double hi = std::min(row_hi, col_hi[px]);
-                if (lo > hi) return;
-                double s;
-                if (!solidEntry(lo, hi, near_, far_, s)) return;
-                if (s < depth_row[px]) stop = visit(px, py, s);
+            forTileSpans(py, hit_cols.lo, hit_cols.hi, z_min, [&](int lo, int hi) {
+                return stop = level_run(py, lo, hi, row_lo, row_hi);
             });
             if (stop) return;
             continue;
@@ -453,7 +479,7 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
     double* depth = depth_.data();
     int32_t* ids = write_ids_ ? index_.data() : nullptr;
     const size_t width = size_t(width_);
-    forBoxHits(box, z_min, cols, rows, [&](int px, int py, double s) {
+    auto pixel = [&](int px, int py, double s) {
         const size_t p = size_t(py) * width + size_t(px);
         depth[p] = s;
         if (ids) ids[p] = index;
@@ -462,7 +488,20 @@ bool IdDepthBuffer::drawBox(int index, const Aabb& box) {
         row_lo = std::min(row_lo, py);
         row_hi = py;
         return false;
-    });
+    };
+    auto level_run = [&](int py, int lo, int hi, double row_lo_s, double row_hi_s) {
+        const LevelBoxRow run{row_lo_s, row_hi_s, box_col_lo_.data(), box_col_hi_.data(),
+                              near_,    far_,     z_min};
+        const WrittenSpan written = writeLevelBoxRun(run, lo, hi, depth + size_t(py) * width,
+                                                     ids ? ids + size_t(py) * width : nullptr, index);
+        if (written.hi < 0) return false;
+        col_lo = std::min(col_lo, written.lo);
+        col_hi = std::max(col_hi, written.hi);
+        row_lo = std::min(row_lo, py);
+        row_hi = py;
+        return false;
+    };
+    forBoxHits(box, z_min, cols, rows, pixel, level_run);
     if (col_hi >= 0) {
         markDirty(col_lo, row_lo);
         markDirty(col_hi, row_hi);
@@ -478,7 +517,16 @@ bool IdDepthBuffer::boxPassesDepthTest(const Aabb& box) const {
     if (!boxCandidates(box, cols, rows, z_min)) return false;
     if (!mayBeNearer(cols, rows, z_min)) return false;
     bool passed = false;
-    forBoxHits(box, z_min, cols, rows, [&](int, int, double) { return passed = true; });
+    auto level_run = [&](int py, int lo, int hi, double row_lo, double row_hi) {
+        const LevelBoxRow run{row_lo, row_hi, box_col_lo_.data(), box_col_hi_.data(),
+                              near_,  far_,   z_min};
+        const double* depth_row = depthRow(py);
+        double s;
+        for (int px = lo; px <= hi; ++px)
+            if (levelBoxWins(run, px, depth_row[px], s)) return passed = true;
+        return false;
+    };
+    forBoxHits(box, z_min, cols, rows, [&](int, int, double) { return passed = true; }, level_run);
     return passed;
 }
 

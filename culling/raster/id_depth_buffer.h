@@ -18,11 +18,13 @@
 // Boxes use lineBox's slab test with its reciprocals 1 / dir[a] taken from
 // per-frame tables where a direction component depends on the row alone
 // (right[a] = 0) or the column alone (up[a] = 0): a level camera (forward.y = 0)
-// has x and z by column and y by row, so a box's x/z slab interval is computed
-// once per column and its y interval once per row, and a pixel only intersects
-// the two. The products and min/max are lineBox's, so every depth is the same
-// double as the plain per-pixel test gives (tests/culling/raster/
-// id_depth_buffer_box_test.cpp, no tolerance); other cameras divide per pixel.
+// has x and z by column and y by row (x or z by row too when it looks along a
+// world axis), so a box's column slab interval is computed once per column and
+// its row interval once per row, and a pixel only intersects the two, in runs
+// without branches (level_box_run.h, two pixels at a time). The products and
+// min/max are lineBox's, so every depth is the same double as the plain
+// per-pixel test gives (tests/culling/raster/id_depth_buffer_box_test.cpp, no
+// tolerance); other cameras divide per pixel.
 // Meshes are rasterized triangle by triangle: near-plane clipping, a fill rule
 // that gives a pixel centre on an edge shared by two triangles to exactly one
 // of them (the right and bottom edges own theirs, as the image is shown),
@@ -165,10 +167,14 @@ private:
     // Calls visit(px, py, s) for each candidate pixel whose ray enters `box` at a
     // depth s in [near, far] nearer than the stored depth, row by row, until
     // visit returns true. Shared by drawBox (which writes) and
-    // boxPassesDepthTest (which stops at the first).
-    template <typename Visit>
+    // boxPassesDepthTest (which stops at the first). Under a level camera (each
+    // axis by column or by row) it hands whole runs of a row to
+    // level_run(py, lo, hi, row_lo, row_hi) instead, the row's slab interval
+    // being [row_lo, row_hi] and the columns' in box_col_lo_ / box_col_hi_;
+    // the run decides its pixels with levelBoxEntry and returns true to stop.
+    template <typename Visit, typename LevelRun>
     void forBoxHits(const Aabb& box, double z_min, const ScreenRange& cols, const ScreenRange& rows,
-                    Visit&& visit) const;
+                    Visit&& visit, LevelRun&& level_run) const;
     // Rasterizes one view-space triangle with z >= near everywhere: depth-tested
     // into the buffer, or (parity) toggling parity_ without any depth test.
     void rasterTriangle(int index, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
@@ -191,8 +197,29 @@ private:
         dirty_rows_ = {0, height_ - 1};
     }
     void refreshTiles();
+    // Calls span(lo, hi) for the runs of [col_lo, col_hi] in row py left once
+    // the tiles whose farthest depth is already <= z are skipped (neighbouring
+    // tiles that are not skipped make one run), until span returns true.
+    template <typename Span>
+    void forTileSpans(int py, int col_lo, int col_hi, double z, Span&& span) const {
+        const double* tiles = tile_far_.data() + size_t(py / kTile) * size_t(tiles_x_);
+        int run_lo = -1;  // start of the current run, -1 between runs
+        for (int px = col_lo; px <= col_hi;) {
+            const int end = std::min(col_hi, (px / kTile + 1) * kTile - 1);
+            if (tiles[px / kTile] > z) {
+                if (run_lo < 0) run_lo = px;
+            } else if (run_lo >= 0) {
+                if (span(run_lo, px - 1)) return;
+                run_lo = -1;
+            }
+            px = end + 1;
+        }
+        if (run_lo >= 0) span(run_lo, col_hi);
+    }
     // Calls visit(px) for px in [col_lo, col_hi] of row py, skipping the tiles
     // whose farthest depth is already <= z.
+    // (Its own loop rather than forTileSpans': the compiler then inlines a
+    // sphere's per-pixel body, which it did not through two lambdas.)
     template <typename Visit>
     void forTileSegments(int py, int col_lo, int col_hi, double z, Visit&& visit) const {
         const double* tiles = tile_far_.data() + size_t(py / kTile) * size_t(tiles_x_);

@@ -9,8 +9,9 @@
 //
 // Cameras: level ones (forward.y exactly 0) at random headings, ones looking
 // exactly along a world axis with odd image sides (so one column and one row
-// have a zero direction component, the tables' 1 / 0 case), and oblique ones
-// (every axis divided per pixel). Boxes: in view, across the image borders,
+// have a zero direction component, the tables' 1 / 0 case) and with even ones
+// (one axis by column, two by row, no zero), and oblique ones (every axis
+// divided per pixel). Boxes: in view, across the image borders,
 // across the near plane, across the eye plane, behind the eye, containing the
 // eye. Each box is drawn alone, then behind or in front of a second box (the
 // depth test and the tile skipping), and boxPassesDepthTest is checked against
@@ -61,7 +62,8 @@ struct BoxView {
     std::vector<Aabb> boxes;
 };
 
-// kind 0: level, 1: along a world axis (odd sides), 2: oblique.
+// kind 0: level, 1: along a world axis (odd sides), 2: oblique, 3: along a
+// world axis (even sides).
 BoxView randomBoxView(uint64_t seed, int kind) {
     SeededRandom rng(seed);
     BoxView view;
@@ -70,7 +72,7 @@ BoxView randomBoxView(uint64_t seed, int kind) {
     if (kind == 0) {
         const double heading = rng.uniform(0.0, 6.283185307179586);
         cam.target = cam.position + glm::dvec3(5.0 * std::cos(heading), 0.0, 5.0 * std::sin(heading));
-    } else if (kind == 1) {
+    } else if (kind == 1 || kind == 3) {
         const int axis = int(rng.below(2)) * 2;  // x or z: up stays world y
         glm::dvec3 d(0.0);
         d[axis] = rng.uniform() < 0.5 ? -5.0 : 5.0;
@@ -88,6 +90,10 @@ BoxView randomBoxView(uint64_t seed, int kind) {
     if (kind == 1) {  // odd: the middle column and row have u = 0, v = 0
         view.width |= 1;
         view.height |= 1;
+    }
+    if (kind == 3) {  // even: no pixel centre at u = 0 or v = 0
+        view.width &= ~1;
+        view.height &= ~1;
     }
     const double tan_y = std::tan(glm::radians(cam.fov_deg) / 2.0);
     const double tan_x = tan_y * cam.aspect;
@@ -112,17 +118,17 @@ BoxView randomBoxView(uint64_t seed, int kind) {
     return view;
 }
 
-const char* kKindName[] = {"level", "axis", "oblique"};
+const char* kKindName[] = {"level", "axis", "oblique", "axis-even"};
 
 TEST(IdDepthBufferBoxFastPath, EveryPixelEqualsThePerPixelSlabTestBitForBit) {
     long long pixels = 0, covered = 0, table_frames = 0;
     for (uint64_t seed : test::seedsToRun(1, 60)) {
         test::withSeed(seed, [&] {
-            for (int kind = 0; kind < 3; ++kind) {
-                const BoxView view = randomBoxView(seed * 3 + uint64_t(kind), kind);
+            for (int kind = 0; kind < 4; ++kind) {
+                const BoxView view = randomBoxView(seed * 4 + uint64_t(kind), kind);
                 glm::dvec3 right, up, forward;
                 view.camera.basis(right, up, forward);
-                if (kind < 2) {
+                if (kind != 2) {
                     // The case under test: x and z by column, y by row.
                     EXPECT_EQ(right.y, 0.0) << kKindName[kind];
                     EXPECT_EQ(up.x, 0.0) << kKindName[kind];
@@ -210,8 +216,8 @@ TEST(IdDepthBufferSphereDepth, EveryPixelEqualsTheQuadraticBitForBit) {
     long long pixels = 0, covered = 0;
     for (uint64_t seed : test::seedsToRun(1, 60)) {
         test::withSeed(seed, [&] {
-            for (int kind = 0; kind < 3; ++kind) {
-                const BoxView view = randomBoxView(seed * 3 + uint64_t(kind), kind);
+            for (int kind = 0; kind < 4; ++kind) {
+                const BoxView view = randomBoxView(seed * 4 + uint64_t(kind), kind);
                 IdDepthBuffer buffer;
                 buffer.resize(view.width, view.height);
                 for (size_t k = 0; k < view.boxes.size(); ++k) {
