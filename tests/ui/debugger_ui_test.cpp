@@ -11,6 +11,7 @@
 
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
 
@@ -41,18 +42,7 @@ TEST(WindowLayout, PanelColumnOnTheRight) {
     EXPECT_EQ(computeLayout(1280, 720, true, 4.0).panels.width, 1280 * 45 / 100);
 }
 
-class HeadlessImGui : public ::testing::Test {
-protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas; no texture upload
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-};
+class HeadlessImGui : public test::HeadlessImGuiTest {};
 
 TEST_F(HeadlessImGui, PanelsAskForNothingWithoutInput) {
     KnobValues knobs;

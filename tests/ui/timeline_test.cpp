@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "culling/io/scene_loader.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
 #include "ui/timeline_panel.h"
@@ -70,18 +71,7 @@ TEST(TimelinePanel, AFrameUnderTheMouse) {
     EXPECT_EQ(timelineFrameAt(150.0f, 100.0f, 300.0f, 1), 0);
 }
 
-class TimelineImGui : public ::testing::Test {
-protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-};
+class TimelineImGui : public test::HeadlessImGuiTest {};
 
 TEST_F(TimelineImGui, AClickOnThePlotSeeksThere) {
     DebuggerSession session(fastKnobs());

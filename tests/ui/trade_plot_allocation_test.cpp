@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "tests/common/allocation_counter.h"
+#include "tests/ui/headless_imgui.h"
 #include "ui/trade_panel.h"
 #include "ui/trade_plot.h"
 
@@ -33,26 +34,11 @@ std::vector<TradePoint> sweep() {
     return points;
 }
 
-class TradePlotAllocationTest : public ::testing::Test {
+class TradePlotAllocationTest : public test::HeadlessImGuiTest {
 protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-
     // One frame of the panel, opened, the pointer over the plot's box.
     void frame(const TradeCurveView& view) {
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(640, 480);
-        io.DeltaTime = 1.0f / 60.0f;
-        io.MousePos = ImVec2(320, 300);
-        ImGui::NewFrame();
-        ImGui::SetNextWindowPos(ImVec2(0, 0));
-        ImGui::SetNextWindowSize(io.DisplaySize);
-        ImGui::Begin("knobs", nullptr, ImGuiWindowFlags_NoDecoration);
+        test::beginWholeDisplayWindow("knobs", 640, 480, 320, 300, false);
         ImGui::SetNextItemOpen(true);
         drawTradePanel(view, "lazy-grid");
         ImGui::End();

@@ -1,7 +1,6 @@
 // The trade curve (ui/trade_plot.h), drawn headless: every point, crowded or
 // not, false-culling or not, can be found under the pointer, and clicking one
 // reports it (what the window applies).
-#include <cfloat>
 #include <set>
 #include <string>
 #include <vector>
@@ -9,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include "tests/ui/headless_imgui.h"
 #include "ui/trade_plot.h"
 
 namespace gridcull {
@@ -26,27 +26,11 @@ TradePoint point(const char* setting, const char* algorithm, double cull_ms, dou
     return p;
 }
 
-class TradePlotTest : public ::testing::Test {
+class TradePlotTest : public test::HeadlessImGuiTest {
 protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-
     // One frame with the pointer at (x, y), the button down or not.
     TradePlotResult frame(const TradePlotInput& input, float x, float y, bool down) {
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(640, 480);
-        io.DeltaTime = 1.0f / 60.0f;
-        io.MousePos = ImVec2(x, y);
-        io.MouseDown[0] = down;
-        ImGui::NewFrame();
-        ImGui::SetNextWindowPos(ImVec2(0, 0));
-        ImGui::SetNextWindowSize(io.DisplaySize);
-        ImGui::Begin("plot", nullptr, ImGuiWindowFlags_NoDecoration);
+        test::beginWholeDisplayWindow("plot", 640, 480, x, y, down);
         const TradePlotResult result = drawTradePlot(input, 600, 400);
         ImGui::End();
         ImGui::Render();

@@ -17,6 +17,7 @@
 #include "culling/bsp_oq/bsp_oq_snapshot.h"
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/common/allocation_counter.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/bsp_oq/bsp_oq_overlay.h"
@@ -336,12 +337,7 @@ class BspOqPanelTest : public BspOqViewTest {
 protected:
     void SetUp() override {
         BspOqViewTest::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        test::createHeadlessImGui();
         names_ = algorithmNames(3);
         snapshot_ = test::snapshotOfSession(session_, names_, file_, errors_);
         snapshot_.algo_index =

@@ -16,6 +16,7 @@
 #include "culling/hzb_tbv/hzb_tbv_snapshot.h"
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/common/allocation_counter.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
@@ -326,12 +327,7 @@ class HzbTbvPanelTest : public HzbTbvViewTest {
 protected:
     void SetUp() override {
         HzbTbvViewTest::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        test::createHeadlessImGui();
         names_ = algorithmNames(3);
         snapshot_ = test::snapshotOfSession(session_, names_, file_, errors_);
         snapshot_.algo_index =

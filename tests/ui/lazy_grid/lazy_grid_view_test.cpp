@@ -18,6 +18,7 @@
 #include "culling/lazy_grid/lazy_grid_snapshot.h"
 #include "culling/raster/id_depth_buffer.h"
 #include "culling/registry/registry.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
 #include "ui/debugger_ui.h"
@@ -262,12 +263,7 @@ class LazyGridPanelTest : public LazyGridViewTest {
 protected:
     void SetUp() override {
         LazyGridViewTest::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        test::createHeadlessImGui();
         names_ = algorithmNames(3);
         snapshot_ = test::snapshotOfSession(session_, names_, file_, errors_);
         snapshot_.algo_index =

@@ -12,6 +12,7 @@
 
 #include "culling/io/scene_loader.h"
 #include "culling/registry/registry.h"
+#include "tests/ui/headless_imgui.h"
 #include "tests/ui/panel_test_helpers.h"
 #include "ui/debugger_session.h"
 #include "ui/debugger_ui.h"
@@ -244,12 +245,7 @@ TEST_F(RgvcViewTest, PickedStaircaseDrawsItsFourStepsAndEveryPolygon) {
 // ui registry, its flags set and a voxel hovered: it draws, and without input
 // asks for nothing.
 TEST_F(RgvcViewTest, PanelDrawsHeadlessAndAsksForNothing) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    test::createHeadlessImGui();
 
     const FamilyViewEntry* entry = familyViewOfAlgorithm("rgvc");
     ASSERT_NE(entry, nullptr);
