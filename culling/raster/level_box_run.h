@@ -22,7 +22,7 @@ namespace gridcull {
 
 // The box and the frame, shared by every pixel of a run.
 struct LevelBoxRow {
-    double row_lo, row_hi;          // the row axis's slab interval
+    double row_lo, row_hi;          // the row axes' slab interval
     const double* col_lo;           // per column: the column axes' slab interval
     const double* col_hi;
     double near, far;               // the camera's depth range
@@ -70,9 +70,9 @@ inline WrittenSpan writeLevelBoxRunScalar(const LevelBoxRow& r, int lo, int hi, 
 }
 
 #if defined(__SSE2__)
-// Two pixels at a time. SSE2's max and min differ from std::max / std::min only
-// in which of two equal operands they return, that is in the sign of a zero,
-// which no comparison here sees.
+// Two pixels at a time. SSE2's max(a, b) is a > b ? a : b where std::max(a, b)
+// is a < b ? b : a (min likewise), so each is called with std::max's operands
+// swapped: the same function, ties and signed zeros included.
 inline WrittenSpan writeLevelBoxRun(const LevelBoxRow& r, int lo, int hi, double* depth_row,
                                     int32_t* id_row, int index) {
     const __m128d row_lo = _mm_set1_pd(r.row_lo), row_hi = _mm_set1_pd(r.row_hi);
@@ -81,10 +81,10 @@ inline WrittenSpan writeLevelBoxRun(const LevelBoxRow& r, int lo, int hi, double
     WrittenSpan written;
     int px = lo;
     for (; px < hi; px += 2) {
-        const __m128d cut_lo = _mm_max_pd(row_lo, _mm_loadu_pd(r.col_lo + px));
-        const __m128d cut_hi = _mm_min_pd(row_hi, _mm_loadu_pd(r.col_hi + px));
+        const __m128d cut_lo = _mm_max_pd(_mm_loadu_pd(r.col_lo + px), row_lo);
+        const __m128d cut_hi = _mm_min_pd(_mm_loadu_pd(r.col_hi + px), row_hi);
         const __m128d eye_inside = _mm_and_pd(_mm_cmple_pd(cut_lo, zero), _mm_cmpge_pd(cut_hi, zero));
-        const __m128d entry = _mm_max_pd(cut_lo, near);
+        const __m128d entry = _mm_max_pd(near, cut_lo);
         const __m128d s = _mm_or_pd(_mm_and_pd(eye_inside, near), _mm_andnot_pd(eye_inside, entry));
         const __m128d in_range = _mm_and_pd(_mm_cmpge_pd(cut_hi, near), _mm_cmple_pd(entry, far));
         const __m128d hit = _mm_and_pd(_mm_cmple_pd(cut_lo, cut_hi), _mm_or_pd(eye_inside, in_range));
