@@ -16,7 +16,8 @@ run() {
     if [ -n "${DISPLAY:-}" ]; then
         "$@"
     else
-        xvfb-run -a -s "-screen 0 1280x720x24" "$@"
+        # -noreset: see scripts/test.sh (a reset drops clients connecting meanwhile).
+        xvfb-run -a -s "-screen 0 1280x720x24 -noreset" "$@"
     fi
 }
 
