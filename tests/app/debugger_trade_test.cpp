@@ -48,7 +48,7 @@ protected:
 };
 
 TEST_F(DebuggerTrade, SweepsInTheBackgroundMarksTheSettingInUseAndAppliesAClickedOne) {
-    open("scenes/city-walk-3d.json");
+    ASSERT_NO_FATAL_FAILURE(open("scenes/city-walk-3d.json"));
     Debugger& debugger = *debugger_;
     EXPECT_TRUE(debugger.snapshot().trade->algorithm.empty());
 
@@ -78,7 +78,7 @@ TEST_F(DebuggerTrade, SweepsInTheBackgroundMarksTheSettingInUseAndAppliesAClicke
 }
 
 TEST_F(DebuggerTrade, AStoppedSweepKeepsWhatItMeasuredAndSaysSo) {
-    open("scenes/forest-walk-3d.json");
+    ASSERT_NO_FATAL_FAILURE(open("scenes/forest-walk-3d.json"));
     Debugger& debugger = *debugger_;
     UiActions start;
     start.knobs.trade.start = true;

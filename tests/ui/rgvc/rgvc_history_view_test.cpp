@@ -26,7 +26,7 @@ constexpr int kFrame = 60;
 class RgvcHistoryView2dTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        test::openRgvc(session_, "figure1-2d.json", kFrame);
+        ASSERT_NO_FATAL_FAILURE(test::openRgvc(session_, "figure1-2d.json", kFrame));
         snap_ = session_.debugSnapshot()->as<RgvcSnapshot>();
         ASSERT_GT(snap_->last_layer, snap_->first_layer + 10);
     }

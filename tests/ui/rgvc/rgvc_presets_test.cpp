@@ -58,8 +58,8 @@ TEST(RgvcPresets, EachPresetShowsItsLayers) {
 class RgvcPresetsTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        test::openRgvc(session2d_, "figure1-2d.json", 30);
-        test::openRgvc(session3d_, "hidden-movers-3d.json", 60);
+        ASSERT_NO_FATAL_FAILURE(test::openRgvc(session2d_, "figure1-2d.json", 30));
+        ASSERT_NO_FATAL_FAILURE(test::openRgvc(session3d_, "hidden-movers-3d.json", 60));
         view_ = findFamilyView("rgvc")->make();
     }
 

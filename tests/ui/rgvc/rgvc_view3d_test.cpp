@@ -30,7 +30,7 @@ namespace {
 class RgvcView3dTest : public ::testing::Test {
 protected:
     void open(const char* file, int frame) {
-        test::openRgvc(session_, file, frame);
+        ASSERT_NO_FATAL_FAILURE(test::openRgvc(session_, file, frame));
         snap_ = session_.debugSnapshot()->as<RgvcSnapshot>();
         ASSERT_EQ(snap_->dimensions, 3);
         ASSERT_GT(snap_->last_layer, snap_->first_layer + 4);
@@ -93,7 +93,7 @@ protected:
 // Each face is a frame quad and an inner quad (4 triangles), back to front:
 // the Manhattan distance of its voxel from the eye's never grows.
 TEST_F(RgvcView3dTest, BoxesAreTheExposedFacesFacingTheEyeBackToFront) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     const RegularGrid& g = snap_->grid;
     const glm::dvec3 eye(-40.0, 90.0, -70.0);  // outside the grid, above its near corner
     const glm::ivec3 e = rgvcVoxelOfPoint(g, eye);
@@ -139,7 +139,7 @@ TEST_F(RgvcView3dTest, BoxesAreTheExposedFacesFacingTheEyeBackToFront) {
 }
 
 TEST_F(RgvcView3dTest, BoxesAtALayerDrawOnlyTheVoxelsInHByThen) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     // The layer by which half the frame's H had been marked.
     std::vector<int32_t> entered;
     for (const int32_t l : snap_->h_layer)
@@ -174,7 +174,7 @@ TEST_F(RgvcView3dTest, BoxesAtALayerDrawOnlyTheVoxelsInHByThen) {
 }
 
 TEST_F(RgvcView3dTest, TheSliceAtALayerShowsHAsItStoodThen) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     const int y = int(std::clamp<int64_t>(viewerVoxel().y, 0, snap_->grid.resolution.y - 1));
     size_t before = 0;
     for (const int64_t at : {snap_->first_layer + 3, (snap_->first_layer + snap_->last_layer) / 2,
@@ -193,7 +193,7 @@ TEST_F(RgvcView3dTest, TheSliceAtALayerShowsHAsItStoodThen) {
 }
 
 TEST_F(RgvcView3dTest, TheSliceShowsEachMatrixOfItsPlaneAlongEveryAxis) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     const int64_t at = (snap_->first_layer + snap_->last_layer) / 2;
     const glm::i64vec3 e = viewerVoxel();
     for (int axis = 0; axis < 3; ++axis) {
@@ -220,7 +220,7 @@ TEST_F(RgvcView3dTest, TheSliceShowsEachMatrixOfItsPlaneAlongEveryAxis) {
 // which are exactly the surfaces of the TBVs' boxes (filled: the boxes); one
 // of the three would be many more.
 TEST_F(RgvcView3dTest, TheSliceShowsTbvsByTheTwoOfThreeTest) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     const RgvcTbvView* tbv = nullptr;
     for (const RgvcTbvView& t : snap_->tbv_list)
         if (!t.edge && t.cells.hi.z > t.cells.lo.z + 2) tbv = &t;
@@ -244,7 +244,7 @@ TEST_F(RgvcView3dTest, TheSliceShowsTbvsByTheTwoOfThreeTest) {
 }
 
 TEST_F(RgvcView3dTest, APickedOccludersCapIsItsShellFacesBlockingVoxels) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     ASSERT_FALSE(snap_->occluders3d.empty());
     // An occluder of a layer after the first, with cells of its own.
     int k = -1;
@@ -332,7 +332,7 @@ TEST_F(RgvcView3dTest, APickedOccludersCapIsItsShellFacesBlockingVoxels) {
 }
 
 TEST_F(RgvcView3dTest, TheVoxelUnderARayIsTheFirstBoxAlongIt) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     RgvcViewState view;  // O, H, T and the layer's voxels
     RgvcFrameIndex& index = scratch_.index;
     const int64_t at = rgvcShownLayer(*snap_, view.layer);
@@ -368,7 +368,7 @@ TEST_F(RgvcView3dTest, TheVoxelUnderARayIsTheFirstBoxAlongIt) {
 // pass hid it (h_cause), its button picks it, and a click on the voxel in the
 // view picks it too.
 TEST_F(RgvcView3dTest, WhyNamesTheOccluderAndAClickOnTheVoxelPicksIt) {
-    open("hidden-movers-3d.json", 60);
+    ASSERT_NO_FATAL_FAILURE(open("hidden-movers-3d.json", 60));
     glm::ivec3 voxel{-1};
     int32_t cause = -1;
     const glm::ivec3 res = snap_->grid.resolution;
@@ -421,7 +421,7 @@ TEST_F(RgvcView3dTest, WhyNamesTheOccluderAndAClickOnTheVoxelPicksIt) {
 }
 
 TEST_F(RgvcView3dTest, ACulledObjectListsTheVoxelsThatHidIt) {
-    open("walkthrough-3d.json", 40);
+    ASSERT_NO_FATAL_FAILURE(open("walkthrough-3d.json", 40));
     RgvcFrameIndex index;
     index.update(*snap_, rgvcShownLayer(*snap_, -1));
     RgvcObjectVoxels object;
