@@ -66,7 +66,7 @@ struct KnobApplyCost {
 // One part of the scene view and what its caption says (ui/scene_panes.h).
 struct PaneCaption {
     WindowRect rect;
-    std::string title;   // "A: rgvc", "culling camera"
+    std::string title;   // "A: " and the algorithm's name, "culling camera"
     std::string detail;  // a line of figures, "" for none
 };
 

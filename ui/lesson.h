@@ -13,7 +13,7 @@
 
 namespace gridcull {
 
-// A family view flag (`rgvc-layer`, say) counted up one value at a time while
+// A family view flag (a layer number, say) counted up one value at a time while
 // the step is shown, so chess layers (or any numbered state) appear one by one.
 struct LessonAnimation {
     std::string flag;  // "": none

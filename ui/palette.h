@@ -8,8 +8,8 @@
 // wherever it is used; a family keys the hues left to it (orange, bluish green,
 // reddish purple) in its own legend, one meaning each within its view, and
 // draws its legend's swatch with the paint its overlay uses, over what the
-// overlay is drawn over (ui/legend_swatch.h; the lazy grid's cell classes by
-// the overlay's own cell code). Vermillion is the
+// overlay is drawn over (ui/legend_swatch.h, or the overlay's own paint code
+// where its legend keys a class of cells). Vermillion is the
 // false culls' alone (the object state and the timeline's marks): no overlay
 // draws it (tests/ui/palette_audit_test.cpp), so a vermillion shape on the
 // screen is always a culling bug.
@@ -25,18 +25,18 @@ struct Rgb {
 
 enum class Swatch : uint8_t {
     Blue,           // visible objects (the object states)
-    SkyBlue,        // hidden objects (in the PVS, not seen); in overlays, picked things (rgvc's occluder)
+    SkyBlue,        // hidden objects (in the PVS, not seen); in overlays, picked things (a picked occluder)
     Vermillion,     // false culls, and nothing else: never in an overlay
-    Yellow,         // the culling camera: its frustum, line of sight (and rgvc's seeds on it), what it sees of a box
-    Orange,         // sub-sample objects (the oracle cannot decide them); in overlays a family's own, keyed in its legend (rgvc I, lazy partially free, TBVs half-way, ...)
-    BluishGreen,    // a family's own, keyed in its legend (rgvc traversal, free cells, visible nodes, ...)
-    ReddishPurple,  // a family's own, keyed in its legend (rgvc T, full cells, expiring TBVs, ...)
+    Yellow,         // the culling camera: its frustum, line of sight (and what a family marks on it), what it sees of a box
+    Orange,         // sub-sample objects (the oracle cannot decide them); in overlays a family's own, keyed in its legend
+    BluishGreen,    // a family's own, keyed in its legend
+    ReddishPurple,  // a family's own, keyed in its legend
     NearBlack,      // opaque things (an occluder matrix), dark backings
     LightGrey,      // veils (occluded regions)
-    Grey,           // states not yet known (outdated cells, nodes not reached); rgvc's static Os
+    Grey,           // states not yet known (outdated cells, nodes not reached), static occluders
     LineGrey,       // grid lines, frames
     DimGrey,        // culled objects and outside the frustum, which recede
-    White,          // under the pointer (rgvc's voxel, the lazy grid's cell and its focused test); bsp and hzb: found hidden
+    White,          // under the pointer (a hovered voxel or cell and its focused test); found hidden (Z-culled nodes, hidden queries)
     Count
 };
 constexpr int kSwatchCount = int(Swatch::Count);

@@ -4,7 +4,7 @@
 //    each state a toggle; the picked object's tree the same way; the focused
 //    node (under the pointer, or picked) again, heavier;
 //  - View space, over the view through the culling camera (an ImageFrame, as
-//    the lazy grid's cells): the frame's occlusion queries as their screen
+//    every image-space family's): the frame's occlusion queries as their screen
 //    rectangles, coloured by answer, each labelled with its batch number, all
 //    batches or one.
 // Colours and toggles: ui/bsp_oq/bsp_oq_view.h.

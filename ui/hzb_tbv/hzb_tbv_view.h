@@ -10,8 +10,8 @@
 // vermillion, dim grey) and the camera (yellow) leave free, and greys:
 //   TBVs by remaining validity, as a fraction of their validity period:
 //     bluish green (long-lived) -> orange -> reddish purple (about to expire);
-//   octree nodes by outcome: white Z-culled (hidden by the Z-pyramid, as rgvc's
-//     occluded voxels are white), grey entered, dim grey frustum-culled;
+//   octree nodes by outcome: white Z-culled (hidden by the Z-pyramid: white is
+//     the palette's "found hidden"), grey entered, dim grey frustum-culled;
 //   Z-pyramid texels: grey levels, near = light, far = dark, empty = black.
 #pragma once
 #include <cstdint>
